@@ -1,0 +1,28 @@
+// Context: what the steps of a run share: the current model, the volume mesh, the report.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "framework/host/log.h"
+#include "framework/model/structural_model.h"
+#include "framework/model/volume_mesh.h"
+
+namespace voroseal {
+
+struct Context {
+  Context(Logger& logger, Progress& progress) : log(logger), progress(progress) {}
+
+  std::string input_path;                       // the model file read, if any
+  std::shared_ptr<const StructuralModel> input;  // the model as read (reference for fidelity)
+  std::shared_ptr<StructuralModel> model;        // current model (remesh replaces it)
+  std::shared_ptr<VolumeMesh> volume;            // set by tetmesh
+  nlohmann::json report = nlohmann::json::object();  // report[module name] = its results
+  int threads = 0;                              // 0: all cores
+  int exit_code = 0;                            // a step may set a non-zero verdict (check)
+  Logger& log;
+  Progress& progress;
+};
+
+}  // namespace voroseal

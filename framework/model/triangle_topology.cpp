@@ -1,0 +1,47 @@
+#include "framework/model/triangle_topology.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace voroseal {
+
+EdgeTable EdgeTable::build(const std::vector<Triangle>& triangles) {
+  // (edge key, triangle) pairs sorted by key: no hashing, deterministic order.
+  std::vector<std::pair<uint64_t, int>> pairs;
+  pairs.reserve(3 * triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+      if (a > b) std::swap(a, b);
+      pairs.emplace_back((uint64_t(a) << 32) | b, static_cast<int>(t));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  EdgeTable table;
+  table.incident.reserve(pairs.size());
+  for (size_t i = 0; i < pairs.size();) {
+    size_t j = i;
+    Edge e;
+    e.a = static_cast<int>(pairs[i].first >> 32);
+    e.b = static_cast<int>(pairs[i].first & 0xffffffffu);
+    e.first = static_cast<int>(table.incident.size());
+    while (j < pairs.size() && pairs[j].first == pairs[i].first) table.incident.push_back(pairs[j++].second);
+    e.count = static_cast<int>(j - i);
+    e.line = false;
+    table.edges.push_back(e);
+    i = j;
+  }
+  return table;
+}
+
+int EdgeTable::find(int a, int b) const {
+  if (a > b) std::swap(a, b);
+  auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(a, b),
+                             [](const Edge& e, const std::pair<int, int>& k) {
+                               return e.a != k.first ? e.a < k.first : e.b < k.second;
+                             });
+  if (it == edges.end() || it->a != a || it->b != b) return -1;
+  return static_cast<int>(it - edges.begin());
+}
+
+}  // namespace voroseal

@@ -1,0 +1,51 @@
+// Reading and writing models and volume meshes, format chosen by file extension.
+//
+// Model formats:  .ml (GOCAD Model3d: parts, regions, layers), .ts (GOCAD TSurf),
+//                 .obj (groups), .mesh (Medit triangles with refs; tetrahedra too),
+//                 written also as .vtu (VTK XML) and .msh (Gmsh 4.1).
+// Volume formats: .mesh, .vtu, .msh, and TetGen .node/.ele/.face (give the .node or .ele path).
+//
+// Readers throw InputError("file:line: message") on malformed input. Writers write a temporary
+// file beside the target and rename it, so a failed write never leaves a partial file, and they
+// refuse to write over any path in WriteOptions::protected_paths (the inputs of the run).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/model/model_builder.h"
+#include "framework/model/structural_model.h"
+#include "framework/model/surface_soup.h"
+#include "framework/model/volume_mesh.h"
+
+namespace voroseal {
+
+struct ReadOptions {
+  BuildOptions build;
+};
+
+struct WriteOptions {
+  std::vector<std::string> protected_paths;  // never written over (compared as files)
+  int precision = 17;                         // significant digits of coordinates
+};
+
+/// Reads the triangulated surfaces of a model file without inferring topology.
+/// \throws InputError
+SurfaceSoup read_soup(const std::string& path);
+/// Reads a model file and builds the StructuralModel (explicit structure for .ml).
+/// \throws InputError, ModelError
+StructuralModel read_model(const std::string& path, const ReadOptions& options = {});
+/// \throws OutputError
+void write_model(const StructuralModel& model, const std::string& path, const WriteOptions& options = {});
+
+/// Reads a tetrahedral mesh (.mesh with Tetrahedra). \throws InputError
+VolumeMesh read_volume_mesh(const std::string& path);
+/// \throws OutputError
+void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Extensions (with the dot, lower case) that read_model / write_model / write_volume_mesh accept.
+std::vector<std::string> readable_model_extensions();
+std::vector<std::string> writable_model_extensions();
+std::vector<std::string> writable_volume_extensions();
+
+}  // namespace voroseal

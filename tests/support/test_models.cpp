@@ -1,0 +1,100 @@
+#include "tests/support/test_models.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <random>
+
+namespace voroseal::test {
+
+SurfaceSoup lattice_box(int n, bool horizon, const Vec3& lo, const Vec3& hi, unsigned shuffle_seed) {
+  SurfaceSoup soup;
+  soup.source = "lattice_box";
+  auto id = [n](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        soup.points.push_back(lo + (hi - lo).cwiseProduct(Vec3(i, j, k) / n));
+  std::mt19937 rng(shuffle_seed);
+  auto add_group = [&](const std::string& name, SurfaceKind kind) {
+    soup.groups.push_back({name, name, kind, ""});
+    return static_cast<int>(soup.groups.size()) - 1;
+  };
+  // Quad (a, b, c, d) counter-clockwise seen from where its normal points.
+  auto quad = [&](int g, int a, int b, int c, int d) {
+    for (Triangle t : {Triangle{a, b, c}, Triangle{a, c, d}}) {
+      if (shuffle_seed != 0 && (rng() & 1)) std::swap(t[1], t[2]);
+      soup.triangles.push_back(t);
+      soup.triangle_group.push_back(g);
+    }
+  };
+  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
+  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
+  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
+      quad(zmax, id(a, b, n), id(a + 1, b, n), id(a + 1, b + 1, n), id(a, b + 1, n));
+      quad(ymin, id(a, 0, b), id(a + 1, 0, b), id(a + 1, 0, b + 1), id(a, 0, b + 1));
+      quad(ymax, id(a, n, b), id(a, n, b + 1), id(a + 1, n, b + 1), id(a + 1, n, b));
+      quad(xmin, id(0, a, b), id(0, a, b + 1), id(0, a + 1, b + 1), id(0, a + 1, b));
+      quad(xmax, id(n, a, b), id(n, a + 1, b), id(n, a + 1, b + 1), id(n, a, b + 1));
+    }
+  if (horizon) {
+    const int h = add_group("horizon", SurfaceKind::Horizon);
+    const int k = n / 2;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) quad(h, id(a, b, k), id(a + 1, b, k), id(a + 1, b + 1, k), id(a, b + 1, k));
+  }
+  return soup;
+}
+
+SurfaceSoup floating_fault(int n, double x0, double lo, double hi) {
+  SurfaceSoup soup;
+  soup.source = "floating_fault";
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j) soup.points.emplace_back(x0, lo + (hi - lo) * j / n, lo + (hi - lo) * k / n);
+  soup.groups.push_back({"fault", "fault", SurfaceKind::Fault, ""});
+  auto id = [n](int j, int k) { return k * (n + 1) + j; };
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) {
+      soup.triangles.push_back({id(j, k), id(j + 1, k), id(j + 1, k + 1)});
+      soup.triangles.push_back({id(j, k), id(j + 1, k + 1), id(j, k + 1)});
+      soup.triangle_group.insert(soup.triangle_group.end(), 2, 0);
+    }
+  return soup;
+}
+
+void append(SurfaceSoup& a, const SurfaceSoup& b) {
+  const int offset = static_cast<int>(a.points.size());
+  const int goffset = static_cast<int>(a.groups.size());
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  for (Triangle t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (int g : b.triangle_group) a.triangle_group.push_back(g + goffset);
+  for (SurfaceGroup g : b.groups) {
+    // Keep group names unique.
+    for (const SurfaceGroup& existing : a.groups)
+      if (existing.name == g.name) g.name += "_" + std::to_string(goffset);
+    a.groups.push_back(g);
+  }
+}
+
+std::string source_dir() {
+  if (const char* s = std::getenv("VOROSEAL_SOURCE_DIR")) return s;
+  return std::filesystem::current_path().string();
+}
+
+std::string shared_model(const std::string& relative) {
+  std::vector<std::string> roots;
+  if (const char* s = std::getenv("VOROSEAL_SHARED_MODELS")) roots.emplace_back(s);
+  roots.push_back(source_dir() + "/../shared/models");
+  for (const std::string& r : roots) {
+    const std::filesystem::path p = std::filesystem::path(r) / relative;
+    if (std::filesystem::exists(p)) return p.string();
+  }
+  return "";
+}
+
+std::string bundled_model(const std::string& name) { return source_dir() + "/models/" + name; }
+
+}  // namespace voroseal::test

@@ -1,0 +1,35 @@
+// Small models built in code for tests, and where to find model files.
+#pragma once
+
+#include <string>
+
+#include "framework/model/surface_soup.h"
+
+namespace voroseal::test {
+
+/// Axis-aligned box [lo, hi] on an n x n x n lattice (n even), each face a group, optionally
+/// cut by a horizontal horizon at mid-height (group "horizon"). Triangle orientations are
+/// randomised from `shuffle_seed` (0: outward normals) to exercise orientation handling.
+SurfaceSoup lattice_box(int n, bool horizon, const Vec3& lo = Vec3(0, 0, 0), const Vec3& hi = Vec3(1, 1, 1),
+                        unsigned shuffle_seed = 0);
+
+/// A square fault patch x = x0 inside the box, not touching anything (a floating surface with
+/// free borders), as a separate soup to append.
+SurfaceSoup floating_fault(int n, double x0, double lo, double hi);
+
+/// Appends b to a (points, triangles, groups).
+void append(SurfaceSoup& a, const SurfaceSoup& b);
+
+/// Directory of the voroseal sources (from VOROSEAL_SOURCE_DIR or the working directory).
+std::string source_dir();
+/// Path of ../shared/models/<relative>, or "" when the shared models are not present.
+std::string shared_model(const std::string& relative);
+/// Path of models/<name> in the repository.
+std::string bundled_model(const std::string& name);
+
+}  // namespace voroseal::test
+
+/// Skips the current test when a shared model is absent.
+#define VOROSEAL_REQUIRE_SHARED(path_var, relative)                                   \
+  const std::string path_var = ::voroseal::test::shared_model(relative);              \
+  if (path_var.empty()) GTEST_SKIP() << "shared model " << (relative) << " not found"
