@@ -12,6 +12,11 @@ void Logger::write(LogLevel at, const char* prefix, const std::string& message) 
   std::fflush(out_);
 }
 
+void Logger::error(const std::string& message) const {
+  std::fprintf(out_, "error: %s\n", message.c_str());
+  std::fflush(out_);
+}
+
 bool stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
 
 void Progress::start(const std::string& task, long total) {

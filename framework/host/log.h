@@ -17,6 +17,8 @@ class Logger {
   LogLevel level() const { return level_; }
   void set_level(LogLevel level) { level_ = level; }
 
+  /// Errors are always printed, whatever the level.
+  void error(const std::string& message) const;
   void warning(const std::string& message) const { write(LogLevel::Warning, "warning: ", message); }
   void info(const std::string& message) const { write(LogLevel::Info, "", message); }
   void debug(const std::string& message) const { write(LogLevel::Debug, "debug: ", message); }

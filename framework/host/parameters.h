@@ -2,6 +2,7 @@
 // command line or a pipeline file, read by the module.
 #pragma once
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct ParameterSpec {
   std::vector<std::string> choices;  // for Choice
   std::string short_name;      // optional one-letter flag, e.g. "o"
   bool required = false;
+  bool positional = false;     // given on the command line after the model, without a flag
   double min = -std::numeric_limits<double>::infinity();  // numeric bounds, inclusive
   double max = std::numeric_limits<double>::infinity();
 };

@@ -1,0 +1,62 @@
+#include "framework/host/runner.h"
+
+#include <exception>
+
+#include "framework/core/error.h"
+
+namespace voroseal {
+
+void load_model(Context& context, const std::string& path, const ReadOptions& options) {
+  auto model = std::make_shared<StructuralModel>(read_model(path, options));
+  context.input_path = path;
+  context.input = model;
+  context.model = std::make_shared<StructuralModel>(*model);
+}
+
+void run_module(const ModuleRegistry& registry, const ModuleRun& run, Context& context) {
+  const Module& module = registry.get(run.module);
+  const Parameters parameters(module.parameters(), run.parameters);
+  if (module.needs_model() && !context.model) {
+    if (run.input.empty()) throw ParameterError(run.module + ": a model file is required");
+    load_model(context, run.input, run.read);
+  }
+  module.run(context, parameters);
+}
+
+int exit_code_for_current_exception(const Logger& log) {
+  try {
+    throw;
+  } catch (const InputError& e) {
+    log.error(e.what());
+    return kExitUnreadable;
+  } catch (const ParameterError& e) {
+    log.error(e.what());
+    return kExitUnreadable;
+  } catch (const ModelError& e) {
+    log.error(std::string("invalid model: ") + e.what());
+    return kExitInvalid;
+  } catch (const MesherError& e) {
+    log.error(std::string("meshing failed: ") + e.what());
+    return kExitInvalid;
+  } catch (const OutputError& e) {
+    log.error(std::string("cannot write: ") + e.what());
+    return kExitInvalid;
+  } catch (const std::bad_alloc&) {
+    log.error("out of memory");
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    log.error(std::string("internal error: ") + e.what());
+    return kExitInternal;
+  }
+}
+
+int run_module_reporting(const ModuleRegistry& registry, const ModuleRun& run, Context& context) {
+  try {
+    run_module(registry, run, context);
+    return context.exit_code;
+  } catch (...) {
+    return exit_code_for_current_exception(context.log);
+  }
+}
+
+}  // namespace voroseal

@@ -1,0 +1,58 @@
+#include "modules/tetmesh/tetgen_plc.h"
+
+#include "framework/core/error.h"
+
+namespace voroseal {
+
+PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
+  PlcMap map;
+  const ModelTriangles flat = flatten(model);
+  if (flat.triangles.empty()) throw ModelError("model '" + model.name + "' has no triangles to tet-mesh");
+  map.region_points = region_points(model);  // throws first: cheaper than a failed TetGen run
+
+  // Only vertices used by triangles: TetGen would insert any other point as a volume vertex.
+  map.vertex_point.assign(model.vertices.size(), -1);
+  for (const Triangle& t : flat.triangles)
+    for (int v : t)
+      if (map.vertex_point[v] < 0) {
+        map.vertex_point[v] = static_cast<int>(map.point_vertex.size());
+        map.point_vertex.push_back(v);
+      }
+  map.facet_triangle = flat.triangles;
+  map.facet_part = flat.part;
+
+  in.firstnumber = 0;
+  in.mesh_dim = 3;
+  in.numberofpoints = static_cast<int>(map.point_vertex.size());
+  in.pointlist = new REAL[3 * in.numberofpoints];
+  for (int i = 0; i < in.numberofpoints; ++i)
+    for (int d = 0; d < 3; ++d) in.pointlist[3 * i + d] = model.vertices[map.point_vertex[i]][d];
+
+  in.numberoffacets = static_cast<int>(flat.triangles.size());
+  in.facetlist = new tetgenio::facet[in.numberoffacets];
+  in.facetmarkerlist = new int[in.numberoffacets];
+  for (int f = 0; f < in.numberoffacets; ++f) {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::polygon& polygon = facet.polygonlist[0];
+    tetgenio::init(&polygon);
+    polygon.numberofvertices = 3;
+    polygon.vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k) polygon.vertexlist[k] = map.vertex_point[flat.triangles[f][k]];
+    in.facetmarkerlist[f] = flat.part[f] + 1;
+  }
+
+  in.numberofregions = static_cast<int>(map.region_points.size());
+  in.regionlist = new REAL[5 * in.numberofregions];
+  for (int r = 0; r < in.numberofregions; ++r) {
+    REAL* entry = in.regionlist + 5 * r;
+    for (int d = 0; d < 3; ++d) entry[d] = map.region_points[r].point[d];
+    entry[3] = r + 1;  // attribute (used with A)
+    entry[4] = -1.0;   // no per-region volume bound
+  }
+  return map;
+}
+
+}  // namespace voroseal

@@ -1,0 +1,35 @@
+// The piecewise linear complex (PLC) TetGen meshes, built in memory from a StructuralModel.
+//
+// Id conventions (kept through to the VolumeMesh):
+//  - facet marker = surface part index + 1 (TetGen reserves 0 for "no marker");
+//    VolumeMesh::triangle_surface = marker − 1 = part index, surface_names = part names;
+//  - region attribute = region index + 1 (TetGen gives 0 to tets outside every region point);
+//    VolumeMesh::tet_region = attribute − 1 = region index, region_names = region names.
+#pragma once
+
+#include <tetgen.h>
+
+#include <vector>
+
+#include "framework/model/structural_model.h"
+#include "modules/tetmesh/region_point.h"
+
+namespace voroseal {
+
+/// How the PLC relates to the model.
+struct PlcMap {
+  std::vector<int> point_vertex;  // TetGen point -> model vertex (unused model vertices left out)
+  std::vector<int> vertex_point;  // model vertex -> TetGen point, -1 when unused
+  std::vector<Triangle> facet_triangle;  // facet -> its triangle (model vertex ids, part orientation)
+  std::vector<int> facet_part;           // facet -> surface part (facets in flatten() order)
+  std::vector<RegionPoint> region_points;  // one per region, inside it
+};
+
+/// Fills `in` (which must be empty) with the model: the vertices used by its triangles, one
+/// triangular facet per triangle with marker = part + 1, and one region point per region with
+/// attribute = region + 1 and no volume bound. Coordinates are the model's local frame.
+/// \throws ModelError when the model has no triangles or no regions, or a region has no
+///         interior point (see region_points()).
+PlcMap build_plc(const StructuralModel& model, tetgenio& in);
+
+}  // namespace voroseal
