@@ -1,0 +1,398 @@
+#include "modules/remesh/mesh_cleanup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "framework/model/triangle_topology.h"
+
+namespace voroseal {
+
+double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+  if (la == 0 || lb == 0 || lc == 0) return 0.0;
+  // Smallest angle is opposite the shortest edge; atan2 form is accurate for slivers.
+  const double area2 = (b - a).cross(c - a).norm();
+  double best = 180.0;
+  const double dot_a = (b - a).dot(c - a), dot_b = (c - b).dot(a - b), dot_c = (a - c).dot(b - c);
+  best = std::min(best, std::atan2(area2, dot_a));
+  best = std::min(best, std::atan2(area2, dot_b));
+  best = std::min(best, std::atan2(area2, dot_c));
+  return best * 180.0 / M_PI;
+}
+
+namespace {
+
+Vec3 normal_of(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+// The surface with vertex -> triangle incidence, edited in place; dead triangles are removed at
+// the end.
+class Editor {
+ public:
+  Editor(RemeshedSurface& s, const StructuralModel& input) : s_(s), input_(input) {
+    around_.resize(s.vertices.size());
+    dead_.assign(s.triangles.size(), 0);
+    for (size_t t = 0; t < s.triangles.size(); ++t)
+      for (int v : s.triangles[t]) around_[v].push_back(static_cast<int>(t));
+  }
+
+  RemeshedSurface& s_;
+  const StructuralModel& input_;
+  std::vector<std::vector<int>> around_;
+  std::vector<char> dead_;
+
+  const Vec3& p(int v) const { return s_.vertices[v]; }
+  Vec3 normal(int t) const {
+    const Triangle& f = s_.triangles[t];
+    return normal_of(p(f[0]), p(f[1]), p(f[2]));
+  }
+  double min_angle(int t) const {
+    const Triangle& f = s_.triangles[t];
+    return min_angle_deg(p(f[0]), p(f[1]), p(f[2]));
+  }
+
+  // Alive triangles containing edge (u, v).
+  void edge_triangles(int u, int v, std::vector<int>& out) const {
+    out.clear();
+    for (int t : around_[u]) {
+      if (dead_[t]) continue;
+      const Triangle& f = s_.triangles[t];
+      if (f[0] == v || f[1] == v || f[2] == v) out.push_back(t);
+    }
+  }
+  bool edge_exists(int u, int v) const {
+    for (int t : around_[u]) {
+      if (dead_[t]) continue;
+      const Triangle& f = s_.triangles[t];
+      if (f[0] == v || f[1] == v || f[2] == v) return true;
+    }
+    return false;
+  }
+  static int opposite(const Triangle& f, int u, int v) {
+    for (int w : f)
+      if (w != u && w != v) return w;
+    return -1;
+  }
+  // A contact edge of the output: not exactly two triangles, or two of different parts.
+  bool is_line_edge(int u, int v) const {
+    std::vector<int> e;
+    edge_triangles(u, v, e);
+    return e.size() != 2 || s_.triangle_part[e[0]] != s_.triangle_part[e[1]];
+  }
+  void neighbours(int v, std::vector<int>& out) const {
+    out.clear();
+    for (int t : around_[v]) {
+      if (dead_[t]) continue;
+      for (int w : s_.triangles[t])
+        if (w != v) out.push_back(w);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  int add_triangle(const Triangle& f, int part) {
+    const int t = static_cast<int>(s_.triangles.size());
+    s_.triangles.push_back(f);
+    s_.triangle_part.push_back(part);
+    dead_.push_back(0);
+    for (int v : f) around_[v].push_back(t);
+    return t;
+  }
+  void kill(int t) { dead_[t] = 1; }
+  // Removes dead triangles from the incidence lists of these vertices.
+  void tidy(int v) {
+    auto& list = around_[v];
+    list.erase(std::remove_if(list.begin(), list.end(), [&](int t) { return dead_[t] != 0; }), list.end());
+  }
+  void finish() {
+    std::vector<Triangle> tris;
+    std::vector<int> part;
+    for (size_t t = 0; t < s_.triangles.size(); ++t)
+      if (!dead_[t]) {
+        tris.push_back(s_.triangles[t]);
+        part.push_back(s_.triangle_part[t]);
+      }
+    s_.triangles = std::move(tris);
+    s_.triangle_part = std::move(part);
+    s_.remove_unused_vertices();
+  }
+
+  bool corner_ends_contact(int corner, int contact) const {
+    const auto& c = input_.contacts[contact].corners;
+    return c[0] == corner || c[1] == corner;
+  }
+};
+
+// Interior (surface) vertex with exactly three triangles of one part around it, closed fan.
+int remove_valence3(Editor& e) {
+  int removed = 0;
+  std::vector<int> ring, tmp;
+  for (size_t v = 0; v < e.s_.vertices.size(); ++v) {
+    if (e.s_.features[v].kind != VertexFeature::Surface) continue;
+    e.tidy(static_cast<int>(v));
+    const auto& tris = e.around_[v];
+    if (tris.size() != 3) continue;
+    const int part = e.s_.triangle_part[tris[0]];
+    if (e.s_.triangle_part[tris[1]] != part || e.s_.triangle_part[tris[2]] != part) continue;
+    // Rotate each triangle to start at v: (v, a, b). A closed fan chains a->b->c->a.
+    std::array<std::pair<int, int>, 3> fan;
+    for (int i = 0; i < 3; ++i) {
+      const Triangle& f = e.s_.triangles[tris[i]];
+      const int k = f[0] == static_cast<int>(v) ? 0 : f[1] == static_cast<int>(v) ? 1 : 2;
+      fan[i] = {f[(k + 1) % 3], f[(k + 2) % 3]};
+    }
+    const int a = fan[0].first, b = fan[0].second;
+    int c = -1;
+    for (int i = 1; i < 3; ++i)
+      if (fan[i].first == b) c = fan[i].second;
+    bool closed = c >= 0 && c != a;
+    if (closed) {
+      bool has_ca = false;
+      for (int i = 1; i < 3; ++i) has_ca = has_ca || (fan[i].first == c && fan[i].second == a);
+      closed = has_ca;
+    }
+    if (!closed) continue;
+    // The new triangle must not exist already (a tetrahedron-like pocket) nor be degenerate.
+    e.edge_triangles(a, b, tmp);
+    bool exists = false;
+    for (int t : tmp)
+      if (Editor::opposite(e.s_.triangles[t], a, b) == c) exists = true;
+    if (exists || normal_of(e.p(a), e.p(b), e.p(c)).norm() == 0.0) continue;
+    for (int t : tris) e.kill(t);
+    e.add_triangle({a, b, c}, part);
+    e.tidy(static_cast<int>(v));
+    ++removed;
+  }
+  return removed;
+}
+
+// Collapse of u into v allowed by the features: a vertex only slides onto something at least as
+// constrained, along the feature it samples.
+bool feature_allows_collapse(const Editor& e, int u, int v) {
+  const VertexFeature& fu = e.s_.features[u];
+  const VertexFeature& fv = e.s_.features[v];
+  switch (fu.kind) {
+    case VertexFeature::Corner:
+      return false;
+    case VertexFeature::Contact:
+      if (!e.is_line_edge(u, v)) return false;
+      if (fv.kind == VertexFeature::Contact) return fv.id == fu.id;
+      if (fv.kind == VertexFeature::Corner) return e.corner_ends_contact(fv.id, fu.id);
+      return false;
+    case VertexFeature::Surface: {
+      for (int t : e.around_[u])
+        if (!e.dead_[t] && e.s_.triangle_part[t] != fu.id) return false;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool try_collapse(Editor& e, int u, int v) {
+  if (!feature_allows_collapse(e, u, v)) return false;
+  std::vector<int> edge, nu, nv;
+  e.edge_triangles(u, v, edge);
+  if (edge.empty()) return false;
+  // Link condition: the common neighbours of u and v are exactly the apexes of the edge.
+  e.neighbours(u, nu);
+  e.neighbours(v, nv);
+  std::vector<int> common;
+  std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+  std::vector<int> apex;
+  for (int t : edge) apex.push_back(Editor::opposite(e.s_.triangles[t], u, v));
+  std::sort(apex.begin(), apex.end());
+  apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
+  if (common != apex || apex.size() != edge.size()) return false;
+  // No triangle may fold over or become a sliver.
+  for (int t : e.around_[u]) {
+    if (e.dead_[t] || std::find(edge.begin(), edge.end(), t) != edge.end()) continue;
+    Triangle f = e.s_.triangles[t];
+    const Vec3 before = e.normal(t);
+    for (int& w : f)
+      if (w == u) w = v;
+    const Vec3 after = normal_of(e.p(f[0]), e.p(f[1]), e.p(f[2]));
+    if (after.dot(before) <= 0.5 * before.norm() * after.norm()) return false;
+    if (min_angle_deg(e.p(f[0]), e.p(f[1]), e.p(f[2])) < 1.0) return false;
+  }
+  for (int t : edge) e.kill(t);
+  for (int t : e.around_[u]) {
+    if (e.dead_[t]) continue;
+    for (int& w : e.s_.triangles[t])
+      if (w == u) w = v;
+    e.around_[v].push_back(t);
+  }
+  e.around_[u].clear();
+  for (int w : apex) e.tidy(w);
+  e.tidy(v);
+  return true;
+}
+
+int collapse_needles(Editor& e, double needle_angle) {
+  int collapsed = 0;
+  const size_t n = e.s_.triangles.size();
+  for (size_t t = 0; t < n; ++t) {
+    if (e.dead_[t] || e.min_angle(static_cast<int>(t)) >= needle_angle) continue;
+    // Shortest edge first: a needle has one, a cap is handled by flips.
+    const Triangle f = e.s_.triangles[t];
+    std::array<std::pair<double, int>, 3> edges;
+    for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [len, i] : edges) {
+      const int a = f[i], b = f[(i + 1) % 3];
+      if (try_collapse(e, a, b) || try_collapse(e, b, a)) {
+        ++collapsed;
+        break;
+      }
+    }
+  }
+  return collapsed;
+}
+
+int flip_edges(Editor& e, double flatness_deg) {
+  const double cos_flat = std::cos(flatness_deg * M_PI / 180.0);
+  int flips = 0;
+  std::vector<int> edge;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+    for (int i = 0; i < 3 && !e.dead_[t]; ++i) {
+      const Triangle f = e.s_.triangles[t];
+      const int u = f[i], v = f[(i + 1) % 3];
+      e.edge_triangles(u, v, edge);
+      if (edge.size() != 2) continue;
+      const int t1 = edge[0] == static_cast<int>(t) ? edge[0] : edge[1];
+      const int t2 = t1 == edge[0] ? edge[1] : edge[0];
+      if (e.s_.triangle_part[t1] != e.s_.triangle_part[t2]) continue;
+      const int c = Editor::opposite(e.s_.triangles[t1], u, v);
+      const int d = Editor::opposite(e.s_.triangles[t2], u, v);
+      if (c == d || e.edge_exists(c, d)) continue;
+      // t1 = (u, v, c) directed; a consistent t2 is (v, u, d).
+      if (!has_directed_edge(e.s_.triangles[t2], v, u)) continue;
+      const Vec3 n1 = e.normal(t1), n2 = e.normal(t2);
+      if (n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) continue;
+      const double before = std::min(e.min_angle(t1), e.min_angle(t2));
+      const Triangle g1{c, u, d}, g2{d, v, c};
+      const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
+      if (after <= before + 1e-3) continue;
+      const Vec3 m1 = normal_of(e.p(c), e.p(u), e.p(d)), m2 = normal_of(e.p(d), e.p(v), e.p(c));
+      const Vec3 ref = n1 + n2;
+      if (m1.dot(ref) <= 0 || m2.dot(ref) <= 0) continue;
+      const int part = e.s_.triangle_part[t1];
+      e.kill(t1);
+      e.kill(t2);
+      e.add_triangle(g1, part);
+      e.add_triangle(g2, part);
+      for (int w : {u, v, c, d}) e.tidy(w);
+      ++flips;
+    }
+  }
+  return flips;
+}
+
+// One Gauss-Seidel pass of tangential smoothing: surface vertices move toward the area-weighted
+// centroid of their ring within the tangent plane, then back onto their input part; contact
+// vertices move toward the middle of their two contact neighbours, then back onto the contact.
+// A move that would fold a triangle is halved, then dropped.
+void smooth(Editor& e, const SurfaceProjector& projector) {
+  std::vector<int> nb;
+  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+    const int v = static_cast<int>(vi);
+    const VertexFeature f = e.s_.features[v];
+    if (f.kind == VertexFeature::Corner) continue;
+    e.tidy(v);
+    const auto& ring = e.around_[v];
+    if (ring.empty()) continue;
+    Vec3 target;
+    if (f.kind == VertexFeature::Surface) {
+      Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero();
+      double area = 0;
+      bool one_part = true;
+      for (int t : ring) {
+        const Triangle& tri = e.s_.triangles[t];
+        const Vec3 n = e.normal(t);
+        const double a = 0.5 * n.norm();
+        centroid += a * (e.p(tri[0]) + e.p(tri[1]) + e.p(tri[2])) / 3.0;
+        normal += n;
+        area += a;
+        one_part = one_part && e.s_.triangle_part[t] == f.id;
+      }
+      if (!one_part || area <= 0 || normal.norm() == 0) continue;
+      centroid /= area;
+      normal.normalize();
+      Vec3 move = centroid - e.p(v);
+      move -= move.dot(normal) * normal;
+      target = e.p(v) + move;
+    } else {
+      e.neighbours(v, nb);
+      Vec3 sum = Vec3::Zero();
+      int count = 0;
+      for (int w : nb) {
+        const VertexFeature& fw = e.s_.features[w];
+        const bool on_contact = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
+                                (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
+        if (on_contact && e.is_line_edge(v, w)) {
+          sum += e.p(w);
+          ++count;
+        }
+      }
+      if (count != 2) continue;
+      target = 0.5 * sum;
+    }
+    const Vec3 old = e.p(v);
+    std::vector<Vec3> before;
+    before.reserve(ring.size());
+    for (int t : ring) before.push_back(e.normal(t));
+    for (double step : {1.0, 0.5, 0.25}) {
+      const Vec3 moved = old + step * (target - old);
+      e.s_.vertices[v] = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved)
+                                                           : projector.on_contact(f.id, moved);
+      bool ok = true;
+      for (size_t k = 0; k < ring.size() && ok; ++k) {
+        const Vec3 n = e.normal(ring[k]);
+        ok = n.dot(before[k]) > 0.0 && n.norm() > 1e-3 * before[k].norm();
+      }
+      if (ok) break;
+      e.s_.vertices[v] = old;
+    }
+  }
+}
+
+}  // namespace
+
+CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
+                       const CleanupOptions& options) {
+  CleanupReport report;
+  Editor e(surface, input);
+  report.valence3_removed += remove_valence3(e);
+  report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+  report.flips += flip_edges(e, options.flip_flatness_deg);
+  for (int i = 0; i < options.smoothing_iterations; ++i) {
+    smooth(e, projector);
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+    ++report.smoothing_passes;
+  }
+  report.valence3_removed += remove_valence3(e);
+  report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+  report.flips += flip_edges(e, options.flip_flatness_deg);
+  smooth(e, projector);
+  e.finish();
+  return report;
+}
+
+void RemeshedSurface::remove_unused_vertices() {
+  std::vector<int> index(vertices.size(), -1);
+  int n = 0;
+  for (const Triangle& t : triangles)
+    for (int v : t)
+      if (index[v] < 0) index[v] = n++;
+  std::vector<Vec3> new_vertices(n);
+  std::vector<VertexFeature> new_features(n);
+  for (size_t v = 0; v < vertices.size(); ++v)
+    if (index[v] >= 0) {
+      new_vertices[index[v]] = vertices[v];
+      new_features[index[v]] = features[v];
+    }
+  for (Triangle& t : triangles)
+    for (int& v : t) v = index[v];
+  vertices = std::move(new_vertices);
+  features = std::move(new_features);
+}
+
+}  // namespace voroseal
