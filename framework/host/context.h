@@ -11,6 +11,8 @@
 
 namespace voroseal {
 
+class ModuleRegistry;
+
 struct Context {
   Context(Logger& logger, Progress& progress) : log(logger), progress(progress) {}
 
@@ -21,6 +23,9 @@ struct Context {
   nlohmann::json report = nlohmann::json::object();  // report[module name] = its results
   int threads = 0;                              // 0: all cores
   int exit_code = 0;                            // a step may set a non-zero verdict (check)
+  /// The modules of this run, so that a module can chain another one by name (remesh
+  /// --tetmesh runs the tetmesh module) without linking it. Set by the runner; may be null.
+  const ModuleRegistry* registry = nullptr;
   Logger& log;
   Progress& progress;
 };

@@ -15,6 +15,7 @@ void load_model(Context& context, const std::string& path, const ReadOptions& op
 
 void run_module(const ModuleRegistry& registry, const ModuleRun& run, Context& context) {
   const Module& module = registry.get(run.module);
+  context.registry = &registry;
   const Parameters parameters(module.parameters(), run.parameters);
   if (module.needs_model() && !context.model) {
     if (run.input.empty()) throw ParameterError(run.module + ": a model file is required");

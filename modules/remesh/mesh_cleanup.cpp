@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "framework/geometry/self_intersections.h"
 #include "framework/model/triangle_topology.h"
 
 namespace voroseal {
@@ -166,14 +167,19 @@ int remove_valence3(Editor& e) {
 }
 
 // Collapse of u into v allowed by the features: a vertex only slides onto something at least as
-// constrained, along the feature it samples.
-bool feature_allows_collapse(const Editor& e, int u, int v) {
+// constrained, along the feature it samples; or, closer than d_min (`merge_below`), a contact
+// vertex joins another contact or a corner, which merges the two features there.
+bool feature_allows_collapse(const Editor& e, int u, int v, double merge_below = 0.0) {
   const VertexFeature& fu = e.s_.features[u];
   const VertexFeature& fv = e.s_.features[v];
+  if (fu.pinned) return false;
   switch (fu.kind) {
     case VertexFeature::Corner:
       return false;
     case VertexFeature::Contact:
+      if (merge_below > 0.0 && fv.kind != VertexFeature::Surface && (e.p(u) - e.p(v)).norm() < merge_below &&
+          !(fv.kind == VertexFeature::Contact && fv.id == fu.id))
+        return true;
       if (!e.is_line_edge(u, v)) return false;
       if (fv.kind == VertexFeature::Contact) return fv.id == fu.id;
       if (fv.kind == VertexFeature::Corner) return e.corner_ends_contact(fv.id, fu.id);
@@ -187,8 +193,8 @@ bool feature_allows_collapse(const Editor& e, int u, int v) {
   return false;
 }
 
-bool try_collapse(Editor& e, int u, int v) {
-  if (!feature_allows_collapse(e, u, v)) return false;
+bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0) {
+  if (!feature_allows_collapse(e, u, v, merge_below)) return false;
   std::vector<int> edge, nu, nv;
   e.edge_triangles(u, v, edge);
   if (edge.empty()) return false;
@@ -201,8 +207,11 @@ bool try_collapse(Editor& e, int u, int v) {
   for (int t : edge) apex.push_back(Editor::opposite(e.s_.triangles[t], u, v));
   std::sort(apex.begin(), apex.end());
   apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
-  if (common != apex || apex.size() != edge.size()) return false;
-  // No triangle may fold over or become a sliver.
+  // (Several triangles of the edge may share an apex: the slivers a contact gets in every part
+  // along it when a restricted Voronoi vertex lies next to the contact.)
+  if (common != apex) return false;
+  // No triangle may fold over, become a sliver, or duplicate a triangle of its part.
+  std::vector<int> existing;
   for (int t : e.around_[u]) {
     if (e.dead_[t] || std::find(edge.begin(), edge.end(), t) != edge.end()) continue;
     Triangle f = e.s_.triangles[t];
@@ -212,6 +221,10 @@ bool try_collapse(Editor& e, int u, int v) {
     const Vec3 after = normal_of(e.p(f[0]), e.p(f[1]), e.p(f[2]));
     if (after.dot(before) <= 0.5 * before.norm() * after.norm()) return false;
     if (min_angle_deg(e.p(f[0]), e.p(f[1]), e.p(f[2])) < 1.0) return false;
+    const int x = f[0] == v ? f[1] : f[0], y = f[0] == v || f[1] == v ? f[2] : f[1];
+    e.edge_triangles(v, x, existing);
+    for (int g : existing)
+      if (e.s_.triangle_part[g] == e.s_.triangle_part[t] && Editor::opposite(e.s_.triangles[g], v, x) == y) return false;
   }
   for (int t : edge) e.kill(t);
   for (int t : e.around_[u]) {
@@ -226,11 +239,58 @@ bool try_collapse(Editor& e, int u, int v) {
   return true;
 }
 
+// A triangle whose three vertices sample one contact: a fold along the contact, made where a
+// restricted Voronoi vertex lies next to the contact. It is removed whatever its angles.
+bool on_one_contact(const Editor& e, const Triangle& f) {
+  int contact = -1;
+  for (int v : f)
+    if (e.s_.features[v].kind == VertexFeature::Contact) contact = e.s_.features[v].id;
+  if (contact < 0) return false;
+  for (int v : f) {
+    const VertexFeature& fv = e.s_.features[v];
+    const bool ok = (fv.kind == VertexFeature::Contact && fv.id == contact) ||
+                    (fv.kind == VertexFeature::Corner && e.corner_ends_contact(fv.id, contact));
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// Thin strips between close contacts (a small fault throw): their edges across the strip,
+// shorter than d_min, are collapsed so that the two contacts merge there (paper Fig. 11c-d).
+void merge_close_features(Editor& e, double min_feature, CleanupReport& report) {
+  if (min_feature <= 0.0) return;
+  std::vector<std::pair<double, std::pair<int, int>>> candidates;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+    if (e.dead_[t]) continue;
+    const Triangle& f = e.s_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      if (u > v) continue;
+      const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+      if (fu.kind == VertexFeature::Surface || fv.kind == VertexFeature::Surface) continue;
+      if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact && fu.id == fv.id) continue;
+      if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) continue;
+      const double len = (e.p(u) - e.p(v)).norm();
+      if (len < min_feature) candidates.push_back({len, {u, v}});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [len, uv] : candidates) {
+    const auto [u, v] = uv;
+    if (e.around_[u].empty() || e.around_[v].empty() || !e.edge_exists(u, v)) continue;
+    const VertexFeature fu = e.s_.features[u], fv = e.s_.features[v];
+    const Vec3 where = e.p(v);
+    if (try_collapse(e, u, v, min_feature) || try_collapse(e, v, u, min_feature))
+      report.merges.push_back({FeatureMerge::CloseFeatures, -1, where, {fu, fv}});
+  }
+}
+
 int collapse_needles(Editor& e, double needle_angle) {
   int collapsed = 0;
   const size_t n = e.s_.triangles.size();
   for (size_t t = 0; t < n; ++t) {
-    if (e.dead_[t] || e.min_angle(static_cast<int>(t)) >= needle_angle) continue;
+    if (e.dead_[t]) continue;
+    if (e.min_angle(static_cast<int>(t)) >= needle_angle && !on_one_contact(e, e.s_.triangles[t])) continue;
     // Shortest edge first: a needle has one, a cap is handled by flips.
     const Triangle f = e.s_.triangles[t];
     std::array<std::pair<double, int>, 3> edges;
@@ -290,12 +350,13 @@ int flip_edges(Editor& e, double flatness_deg) {
 // centroid of their ring within the tangent plane, then back onto their input part; contact
 // vertices move toward the middle of their two contact neighbours, then back onto the contact.
 // A move that would fold a triangle is halved, then dropped.
-void smooth(Editor& e, const SurfaceProjector& projector) {
+void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr) {
   std::vector<int> nb;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
+    if (only != nullptr && !(*only)[v]) continue;
     const VertexFeature f = e.s_.features[v];
-    if (f.kind == VertexFeature::Corner) continue;
+    if (f.kind == VertexFeature::Corner || f.pinned) continue;
     e.tidy(v);
     const auto& ring = e.around_[v];
     if (ring.empty()) continue;
@@ -354,6 +415,65 @@ void smooth(Editor& e, const SurfaceProjector& projector) {
   }
 }
 
+// Pairs of alive triangles that intersect (exact predicates), as editor triangle indices.
+std::vector<std::pair<int, int>> intersecting_pairs(const Editor& e) {
+  std::vector<int> alive;
+  std::vector<Triangle> tris;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+    if (!e.dead_[t] && !is_degenerate(e.s_.vertices, e.s_.triangles[t])) {
+      alive.push_back(static_cast<int>(t));
+      tris.push_back(e.s_.triangles[t]);
+    }
+  std::vector<std::pair<int, int>> pairs = find_self_intersections(e.s_.vertices, tris);
+  for (auto& [a, b] : pairs) {
+    a = alive[a];
+    b = alive[b];
+  }
+  return pairs;
+}
+
+// Removes intersections (paper §3.3: "resolved by vertex displacements or edge flipping"):
+// the vertices of intersecting triangles and their neighbours are smoothed again (which pulls a
+// fold back onto its surface), then the shortest edges of the triangles still intersecting are
+// collapsed where the features allow it.
+void resolve_intersections(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options,
+                           CleanupReport& report) {
+  std::vector<std::pair<int, int>> pairs = intersecting_pairs(e);
+  report.intersections_found = static_cast<int>(pairs.size());
+  std::vector<int> nb;
+  for (int round = 0; round < options.intersection_rounds && !pairs.empty(); ++round) {
+    std::vector<char> involved(e.s_.vertices.size(), 0);
+    for (const auto& [a, b] : pairs)
+      for (int t : {a, b})
+        for (int v : e.s_.triangles[t]) {
+          involved[v] = 1;
+          e.neighbours(v, nb);
+          for (int w : nb) involved[w] = 1;
+        }
+    for (int k = 0; k < 3; ++k) smooth(e, projector, &involved);
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+    pairs = intersecting_pairs(e);
+    if (pairs.empty() || round == 0) continue;
+    for (const auto& [a, b] : pairs)
+      for (int t : {a, b}) {
+        if (e.dead_[t]) continue;
+        const Triangle f = e.s_.triangles[t];
+        std::array<std::pair<double, int>, 3> edges;
+        for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
+        std::sort(edges.begin(), edges.end());
+        for (const auto& [len, i] : edges) {
+          const int u = f[i], v = f[(i + 1) % 3];
+          if (try_collapse(e, u, v) || try_collapse(e, v, u)) {
+            ++report.needles_collapsed;
+            break;
+          }
+        }
+      }
+    pairs = intersecting_pairs(e);
+  }
+  report.intersections_left = static_cast<int>(pairs.size());
+}
+
 }  // namespace
 
 CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
@@ -361,6 +481,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   CleanupReport report;
   Editor e(surface, input);
   report.valence3_removed += remove_valence3(e);
+  merge_close_features(e, options.min_feature, report);
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
   report.flips += flip_edges(e, options.flip_flatness_deg);
   for (int i = 0; i < options.smoothing_iterations; ++i) {
@@ -372,6 +493,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
   report.flips += flip_edges(e, options.flip_flatness_deg);
   smooth(e, projector);
+  if (options.resolve_intersections) resolve_intersections(e, projector, options, report);
   e.finish();
   return report;
 }

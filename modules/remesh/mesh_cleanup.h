@@ -1,9 +1,11 @@
 // Clean-up of the remeshed surfaces (paper §3.3): remove valence-3 interior vertices and needle
-// triangles without unsealing contacts, improve the triangles with edge flips and tangential
-// smoothing, and keep every vertex on the input feature it samples.
+// triangles without unsealing contacts, merge features closer than d_min, improve the
+// triangles with edge flips and tangential smoothing, keep every vertex on the input feature it
+// samples, and resolve the remaining intersections.
 #pragma once
 
 #include "framework/model/structural_model.h"
+#include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/remeshed_surface.h"
 #include "modules/remesh/surface_projection.h"
 
@@ -13,6 +15,12 @@ struct CleanupOptions {
   int smoothing_iterations = 10;
   double needle_angle_deg = 12.0;   // triangles with a smaller angle are collapsed or flipped away
   double flip_flatness_deg = 15.0;  // flip only where the two triangles are nearly coplanar
+  bool resolve_intersections = true;
+  int intersection_rounds = 6;
+  /// d_min (paper Fig. 11c-d): an edge shorter than this between vertices on different contacts
+  /// (or a contact and a corner) is collapsed, merging the features there: the thin strip of a
+  /// small fault throw closes, a fault tip joins the fault next to it. 0 disables it.
+  double min_feature = 0.0;
 };
 
 struct CleanupReport {
@@ -20,6 +28,9 @@ struct CleanupReport {
   int needles_collapsed = 0;
   int flips = 0;
   int smoothing_passes = 0;
+  int intersections_found = 0;  // intersecting triangle pairs before they were resolved
+  int intersections_left = 0;   // pairs that could not be resolved
+  std::vector<FeatureMerge> merges;  // features merged closer than min_feature
 };
 
 /// Cleans `surface` in place. Corners never move; contact vertices move along their contact;

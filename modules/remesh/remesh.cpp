@@ -1,0 +1,174 @@
+#include "modules/remesh/remesh.h"
+
+#include <chrono>
+#include <map>
+
+#include "framework/core/error.h"
+#include "framework/model/model_builder.h"
+#include "modules/remesh/restricted_voronoi_diagram.h"
+#include "modules/remesh/surface_projection.h"
+
+namespace voroseal {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+FeatureCounts counts_of(const StructuralModel& m) {
+  return {static_cast<int>(m.parts.size()), static_cast<int>(m.contacts.size()), static_cast<int>(m.corners.size()),
+          static_cast<int>(m.regions.size())};
+}
+
+}  // namespace
+
+StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
+                                    TopologyReport* report) {
+  SurfaceSoup soup;
+  soup.source = input.name;
+  soup.points.reserve(surface.vertices.size());
+  for (const Vec3& v : surface.vertices) soup.points.push_back(v + input.frame.origin);
+  soup.triangles = surface.triangles;
+  // One group per input part that still has triangles.
+  std::vector<int> group_of_part(input.parts.size(), -1);
+  std::vector<int> part_of_group;
+  for (int p : surface.triangle_part) {
+    if (group_of_part[p] >= 0) continue;
+    group_of_part[p] = static_cast<int>(soup.groups.size());
+    part_of_group.push_back(p);
+    const SurfacePart& part = input.parts[p];
+    SurfaceGroup g;
+    g.name = part.name;
+    if (part.interface >= 0) {
+      const Interface& itf = input.interfaces[part.interface];
+      g.interface = itf.name;
+      g.kind = itf.kind;
+      g.feature = itf.feature;
+    }
+    soup.groups.push_back(g);
+  }
+  soup.triangle_group.reserve(surface.triangle_part.size());
+  for (int p : surface.triangle_part) soup.triangle_group.push_back(group_of_part[p]);
+  if (soup.triangles.empty()) throw MesherError("remesh: the resolution is too coarse, no triangle was built");
+
+  BuildOptions options;
+  options.weld_tolerance = 0.0;  // the remesher's vertices are unique by construction
+  StructuralModel out = build_model(soup, options);
+  out.name = input.name;
+
+  // Map every output region to the input region its sides came from (majority of side votes).
+  const auto input_sides = input.part_regions();
+  auto input_region_of_side = [&](const Side& s) {
+    const SurfacePart& part = out.parts[s.part];
+    // Output part names are "<input part name>" or "<input part name>#k".
+    int p = -1;
+    for (size_t g = 0; g < soup.groups.size() && p < 0; ++g)
+      if (part.name == soup.groups[g].name || part.name.rfind(soup.groups[g].name + "#", 0) == 0)
+        p = part_of_group[g];
+    if (p < 0) return -3;
+    return s.positive ? input_sides[p].first : input_sides[p].second;
+  };
+  std::vector<int> match(out.regions.size(), -1);
+  for (size_t r = 0; r < out.regions.size(); ++r) {
+    std::map<int, int> votes;
+    for (const Side& s : out.regions[r].sides) ++votes[input_region_of_side(s)];
+    int best = -1, best_votes = 0;
+    for (const auto& [region, n] : votes)
+      if (region >= 0 && n > best_votes) {
+        best = region;
+        best_votes = n;
+      }
+    match[r] = best;
+  }
+  // Order output regions as the input's; keep names and layers.
+  std::vector<int> order(out.regions.size());
+  for (size_t r = 0; r < order.size(); ++r) order[r] = static_cast<int>(r);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const int ka = match[a] < 0 ? 1 << 30 : match[a], kb = match[b] < 0 ? 1 << 30 : match[b];
+    return ka < kb;
+  });
+  std::vector<Region> regions;
+  std::vector<int> new_index(out.regions.size());
+  std::vector<int> output_of_input(input.regions.size(), -1);
+  for (int r : order) {
+    Region region = out.regions[r];
+    if (match[r] >= 0) {
+      region.name = input.regions[match[r]].name;
+      if (output_of_input[match[r]] < 0) output_of_input[match[r]] = static_cast<int>(regions.size());
+    }
+    new_index[r] = static_cast<int>(regions.size());
+    regions.push_back(std::move(region));
+  }
+  out.regions = std::move(regions);
+  out.universe.name = input.universe.name.empty() ? "Universe" : input.universe.name;
+  out.layers.clear();
+  for (const Layer& layer : input.layers) {
+    Layer l{layer.name, {}};
+    for (int r : layer.regions)
+      if (output_of_input[r] >= 0) l.regions.push_back(output_of_input[r]);
+    out.layers.push_back(std::move(l));
+  }
+
+  if (report != nullptr) {
+    report->input = counts_of(input);
+    report->output = counts_of(out);
+    report->output_region_of_input = output_of_input;
+    bool preserved = out.regions.size() == input.regions.size();
+    for (int r : output_of_input) preserved = preserved && r >= 0;
+    if (preserved) {
+      // Same adjacency, through the matching.
+      const auto a_in = input.region_adjacency();
+      const auto a_out = out.region_adjacency();
+      for (size_t r = 0; r < input.regions.size() && preserved; ++r) {
+        std::vector<int> mapped;
+        for (int n : a_in[r]) mapped.push_back(output_of_input[n]);
+        std::sort(mapped.begin(), mapped.end());
+        preserved = mapped == a_out[output_of_input[r]];
+      }
+    }
+    report->regions_preserved = preserved;
+  }
+  return out;
+}
+
+RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress) {
+  RemeshResult result;
+  result.seeds = optimize_seeds(input, options.seeds, log, progress);
+
+  auto t0 = std::chrono::steady_clock::now();
+  const ModelGeometry geometry(input, options.seeds.vertex_density);
+  RvdOptions rvd_options;
+  rvd_options.threads = options.seeds.threads;
+  const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
+  result.rvd_seconds = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  const SurfaceProjector projector(input);
+  const double h = edge_length_for_seeds(geometry.area(), static_cast<int>(result.seeds.seeds.size()));
+  MeshBuildOptions build = options.build;
+  if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
+  CleanupOptions cleanup = options.cleanup;
+  if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h;
+  result.min_feature = cleanup.min_feature;
+  result.build = build_remeshed_surface(input, geometry, rvd, projector, build);
+  result.build_seconds = seconds_since(t0);
+  log.debug("remesh: " + std::to_string(result.build.cell_components) + " cell components, " +
+            std::to_string(result.build.contact_components) + " contact components, " +
+            std::to_string(result.build.surface.triangles.size()) + " triangles built");
+  if (result.build.inconsistencies > 0)
+    log.warning("remesh: " + std::to_string(result.build.inconsistencies) +
+                " restricted Voronoi vertices could not be matched between cells");
+
+  t0 = std::chrono::steady_clock::now();
+  if (options.clean_up) result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
+  result.cleanup_seconds = seconds_since(t0);
+
+  result.model = model_from_remeshed(result.build.surface, input, &result.topology);
+  result.topology.merges = result.build.merges;
+  result.topology.merges.insert(result.topology.merges.end(), result.cleanup.merges.begin(), result.cleanup.merges.end());
+  result.build.surface = RemeshedSurface{};
+  return result;
+}
+
+}  // namespace voroseal

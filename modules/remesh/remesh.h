@@ -1,0 +1,62 @@
+// The remesher (Pellerin et al. 2014): optimised seeds -> restricted Voronoi diagram -> dual of
+// its connected components -> clean-up -> a new StructuralModel, with a report of what changed.
+//
+// Guarantees, checked by the tests: every output triangle lies on the input surfaces (vertices
+// are projected back on the part, contact or corner they sample); contacts are conformal
+// (a contact vertex is shared by every part along the contact); surface parts keep the
+// orientation of the input part they remesh; output parts, contacts, corners and regions are
+// inferred from the output triangles and mapped back to the input's names.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/host/log.h"
+#include "framework/model/structural_model.h"
+#include "modules/remesh/mesh_builder.h"
+#include "modules/remesh/mesh_cleanup.h"
+#include "modules/remesh/seed_optimization.h"
+
+namespace voroseal {
+
+struct RemeshOptions {
+  SeedOptions seeds;
+  MeshBuildOptions build;
+  /// cleanup.min_feature < 0 means d_min = -cleanup.min_feature x the mean edge length of the
+  /// remesh (features much thinner than the triangles only give slivers).
+  CleanupOptions cleanup;
+  bool clean_up = true;
+};
+
+/// Counts of the model's features before and after remeshing.
+struct FeatureCounts {
+  int surfaces = 0, contacts = 0, corners = 0, regions = 0;
+};
+
+struct TopologyReport {
+  FeatureCounts input, output;
+  bool regions_preserved = false;   // same count and adjacency, matched by their sides
+  std::vector<int> output_region_of_input;  // -1 when an input region was lost
+  std::vector<FeatureMerge> merges;
+};
+
+struct RemeshResult {
+  StructuralModel model;
+  SeedOptimizationResult seeds;
+  MeshBuildResult build;            // surface left empty (it is `model`)
+  CleanupReport cleanup;
+  TopologyReport topology;
+  double min_feature = 0.0;         // d_min used
+  double rvd_seconds = 0.0, build_seconds = 0.0, cleanup_seconds = 0.0;
+};
+
+/// Remeshes `input`. \throws ParameterError, ModelError (empty model), MesherError (the output
+/// cannot form a model).
+RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress);
+
+/// The output model from remeshed surfaces: parts, contacts, corners and regions inferred from
+/// the triangles; part, interface and region names taken from the input.
+StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
+                                    TopologyReport* report = nullptr);
+
+}  // namespace voroseal

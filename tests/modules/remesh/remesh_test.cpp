@@ -1,0 +1,71 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "framework/model/model_builder.h"
+#include "modules/remesh/remesh.h"
+#include "tests/support/test_models.h"
+
+namespace voroseal {
+namespace {
+
+struct EdgeCounts {
+  int border = 0;      // one incident triangle
+  int manifold = 0;
+  int line = 0;
+};
+
+EdgeCounts count_edges(const StructuralModel& m) {
+  std::map<std::pair<int, int>, int> incidence;
+  for (const Triangle& t : flatten(m).triangles)
+    for (int i = 0; i < 3; ++i) {
+      int a = t[i], b = t[(i + 1) % 3];
+      if (a > b) std::swap(a, b);
+      ++incidence[{a, b}];
+    }
+  EdgeCounts c;
+  for (const auto& [e, n] : incidence) {
+    if (n == 1) ++c.border;
+    if (n == 2) ++c.manifold;
+    if (n > 2) ++c.line;
+  }
+  return c;
+}
+
+double mean_quality(const StructuralModel& m) {
+  double sum = 0;
+  int n = 0;
+  for (const Triangle& t : flatten(m).triangles) {
+    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+    const double s = 0.5 * (b - a).cross(c - a).norm();
+    const double p = 0.5 * (la + lb + lc);
+    sum += 6.0 * s / (std::sqrt(3.0) * std::max({la, lb, lc}) * p);
+    ++n;
+  }
+  return sum / n;
+}
+
+TEST(Remesh, BoxWithHorizonKeepsEverything) {
+  const StructuralModel input = build_model(test::lattice_box(12, true));
+  Logger log(LogLevel::Warning);
+  Progress progress(false);
+  RemeshOptions options;
+  options.seeds.num_seeds = 600;
+  const RemeshResult r = remesh(input, options, log, progress);
+  const StructuralModel& out = r.model;
+  EXPECT_EQ(r.build.inconsistencies, 0);
+  EXPECT_EQ(out.parts.size(), input.parts.size());
+  EXPECT_EQ(out.contacts.size(), input.contacts.size());
+  EXPECT_EQ(out.corners.size(), input.corners.size());
+  ASSERT_EQ(out.regions.size(), 2u);
+  EXPECT_TRUE(r.topology.regions_preserved);
+  for (const Region& reg : out.regions) EXPECT_NEAR(-out.signed_volume(reg.sides), 0.5, 1e-6);
+  const EdgeCounts e = count_edges(out);
+  EXPECT_EQ(e.border, 0);
+  EXPECT_GT(mean_quality(out), 0.85);
+}
+
+}  // namespace
+}  // namespace voroseal
