@@ -38,7 +38,9 @@ StructuralModel read_model(const std::string& path, const ReadOptions& options =
 /// \throws OutputError
 void write_model(const StructuralModel& model, const std::string& path, const WriteOptions& options = {});
 
-/// Reads a tetrahedral mesh (.mesh with Tetrahedra). \throws InputError
+/// Reads a tetrahedral mesh: .mesh (Tetrahedra), .vtu, .msh, or TetGen files (any of
+/// .node/.ele/.face; the .face file is optional). Vertices are moved to a local frame.
+/// \throws InputError
 VolumeMesh read_volume_mesh(const std::string& path);
 /// \throws OutputError
 void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const WriteOptions& options = {});

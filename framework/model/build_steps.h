@@ -1,6 +1,7 @@
 // The steps of build_model() after parts are known (internal to framework/model).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "framework/model/model_builder.h"
@@ -13,6 +14,11 @@ struct PartedTriangles {
   std::vector<Triangle> triangles;  // welded vertex ids, oriented consistently per part
   std::vector<int> part;
   EdgeTable edges;                  // line flags set
+  /// Line edges that an explicit part (a Model3d TFACE) crosses without a border in the file:
+  /// its two triangles there share the edge's input points. (a, b, part) with a < b, sorted.
+  /// Filled for CornerRule::Incidence only: RINGMesh's Model3d loader does not count such a
+  /// part among the surfaces of the line (see find_crossed_line_edges in model_builder.cpp).
+  std::vector<std::array<int, 3>> crossed_line_edges;
 };
 
 /// Chains line edges into contacts between corners (rule: see CornerRule); fills

@@ -12,6 +12,9 @@ struct LineEdge {
   int a, b;
   std::vector<int> signature;  // sorted unique parts of the incident triangles
   int incidence;
+  /// The signature without the parts that cross the edge in the file (see
+  /// PartedTriangles::crossed_line_edges): what decides corners.
+  std::vector<int> border;
 };
 
 }  // namespace
@@ -21,10 +24,13 @@ void build_contacts(StructuralModel& model, const PartedTriangles& t, CornerRule
   std::vector<LineEdge> lines;
   for (const EdgeTable::Edge& e : t.edges.edges) {
     if (!e.line) continue;
-    LineEdge l{e.a, e.b, {}, e.count};
+    LineEdge l{e.a, e.b, {}, e.count, {}};
     for (int i = e.first; i < e.first + e.count; ++i) l.signature.push_back(t.part[t.edges.incident[i]]);
     std::sort(l.signature.begin(), l.signature.end());
     l.signature.erase(std::unique(l.signature.begin(), l.signature.end()), l.signature.end());
+    for (int p : l.signature)
+      if (!std::binary_search(t.crossed_line_edges.begin(), t.crossed_line_edges.end(), std::array<int, 3>{e.a, e.b, p}))
+        l.border.push_back(p);
     lines.push_back(std::move(l));
   }
 
@@ -74,8 +80,8 @@ void build_contacts(StructuralModel& model, const PartedTriangles& t, CornerRule
     if (!corner) {
       const LineEdge& e1 = lines[around[start[v]]];
       const LineEdge& e2 = lines[around[start[v] + 1]];
-      corner = e1.signature != e2.signature || e1.incidence != e2.incidence;
-      if (!corner && rule == CornerRule::Incidence) corner = vertex_parts[v] != e1.signature;
+      corner = e1.border != e2.border || e1.incidence != e2.incidence;
+      if (!corner && rule == CornerRule::Incidence) corner = vertex_parts[v] != e1.border;
     }
     if (corner) make_corner(v);
   }

@@ -6,6 +6,7 @@
 #include <map>
 #include <queue>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "framework/core/error.h"
 #include "framework/core/union_find.h"
@@ -36,9 +37,11 @@ class ModelBuilder {
     clean_triangles();
     t_.edges = EdgeTable::build(t_.triangles);
     classify_line_edges();
+    find_crack_vertices();
     find_parts();
     orient_parts();
     count_sewn_edges();
+    find_crossed_line_edges();
     make_interfaces_and_parts();
     build_contacts(model_, t_, options_.corner_rule);
     if (soup_.has_explicit_parts && !soup_.regions.empty() && !options_.ignore_explicit_regions)
@@ -123,6 +126,7 @@ class ModelBuilder {
           ++model_.build.colocated_points_in_group;
           it->second = in[i];  // count each further duplicate once
           cracked[g] = 1;
+          colocated_keys_.insert(k);
         }
       }
       t_.triangles.push_back(t);
@@ -155,6 +159,61 @@ class ModelBuilder {
         e.line = n0.dot(n1) < cos_feature;
       }
     }
+  }
+
+  // A group may use several input points at one vertex only along an internal border: a line
+  // edge with two triangles of that group (the two lips of a horizon on a fault without
+  // throw). Anywhere else the copies are a crack that welding hid (RINGMesh's vertex rule).
+  void find_crack_vertices() {
+    // A group with an edge of 3+ of its own triangles holds several surfaces (a Medit soup with
+    // all refs 0): there welding cannot tell a crack from a contact, so it is not searched.
+    multi_surface_group_.assign(soup_.groups.size(), 0);
+    std::vector<int> count(soup_.groups.size(), 0);
+    for (const EdgeTable::Edge& e : t_.edges.edges) {
+      if (e.count < 3) continue;
+      for (int i = e.first; i < e.first + e.count; ++i)
+        if (++count[group_[t_.edges.incident[i]]] == 3) multi_surface_group_[group_[t_.edges.incident[i]]] = 1;
+      for (int i = e.first; i < e.first + e.count; ++i) count[group_[t_.edges.incident[i]]] = 0;
+    }
+    for (size_t g = 0; g < soup_.groups.size(); ++g)
+      if (multi_surface_group_[g]) model_.build.multi_surface_groups.push_back(soup_.groups[g].name);
+    if (colocated_keys_.empty()) return;
+    auto key_of = [](int v, int g) { return (uint64_t(v) << 32) | uint32_t(g); };
+    std::vector<std::pair<uint64_t, int>> copies;  // (vertex, group) -> input point
+    for (size_t f = 0; f < t_.triangles.size(); ++f)
+      for (int i = 0; i < 3; ++i) {
+        const uint64_t k = key_of(t_.triangles[f][i], group_[f]);
+        if (!multi_surface_group_[group_[f]] && colocated_keys_.count(k)) copies.emplace_back(k, soup_.triangles[input_triangle_[f]][i]);
+      }
+    std::sort(copies.begin(), copies.end());
+    copies.erase(std::unique(copies.begin(), copies.end()), copies.end());
+    std::unordered_set<uint64_t> internal_border;
+    std::vector<int> groups;
+    for (const EdgeTable::Edge& e : t_.edges.edges) {
+      if (!e.line || e.count < 2) continue;
+      groups.clear();
+      for (int i = e.first; i < e.first + e.count; ++i) groups.push_back(group_[t_.edges.incident[i]]);
+      std::sort(groups.begin(), groups.end());
+      for (size_t i = 1; i < groups.size(); ++i)
+        if (groups[i] == groups[i - 1]) {
+          internal_border.insert(key_of(e.a, groups[i]));
+          internal_border.insert(key_of(e.b, groups[i]));
+        }
+    }
+    std::vector<char> cracked(soup_.groups.size(), 0);
+    for (size_t i = 0; i < copies.size();) {
+      size_t j = i;
+      while (j < copies.size() && copies[j].first == copies[i].first) ++j;
+      const uint64_t k = copies[i].first;
+      if (j - i > 2 || (j - i == 2 && !internal_border.count(k))) {
+        ++model_.build.crack_vertices;
+        cracked[k & 0xffffffffu] = 1;
+        if (model_.build.crack_locations.size() < 20) model_.build.crack_locations.push_back(model_.vertices[k >> 32]);
+      }
+      i = j;
+    }
+    for (size_t g = 0; g < cracked.size(); ++g)
+      if (cracked[g]) crack_groups_.push_back(static_cast<int>(g));
   }
 
   // Surface parts: explicit groups, or components of triangles through non-line edges.
@@ -268,14 +327,51 @@ class ModelBuilder {
                        std::to_string(model_.build.inconsistent_orientation_edges) + " conflicting edges)");
   }
 
+  // Explicit parts may continue across a line edge in the file: near a fault tip a horizon
+  // TFACE is often not split where the fault meets it (its two triangles there share their
+  // input points). RINGMesh's Model3d loader keeps that adjacency, so the patch is not a
+  // surface of the line there and the vertices where it touches the line become corners:
+  // CloudSpin_fixed.ml has 14 such edges, giving RINGMesh's 249 lines / 148 corners instead of
+  // 239 / 138. Only for CornerRule::Incidence (the RINGMesh convention) and explicit parts;
+  // inferred parts never cross a line edge with two triangles of a file-continuous surface
+  // on purpose, so the rule would only add spurious corners there.
+  void find_crossed_line_edges() {
+    t_.crossed_line_edges.clear();
+    if (!soup_.has_explicit_parts || options_.corner_rule != CornerRule::Incidence) return;
+    auto input_point = [&](int f, int v) {
+      for (int i = 0; i < 3; ++i)
+        if (welded_[soup_.triangles[input_triangle_[f]][i]] == v) return soup_.triangles[input_triangle_[f]][i];
+      return -1;
+    };
+    for (const EdgeTable::Edge& e : t_.edges.edges) {
+      if (!e.line || e.count < 3) continue;
+      for (int i = e.first; i < e.first + e.count; ++i) {
+        const int part = t_.part[t_.edges.incident[i]];
+        int same = 0, other = -1;
+        for (int j = e.first; j < e.first + e.count; ++j)
+          if (t_.part[t_.edges.incident[j]] == part) {
+            ++same;
+            if (j != i) other = t_.edges.incident[j];
+          }
+        // Each pair is seen from both triangles: record it from the first one only.
+        if (same != 2 || other < t_.edges.incident[i]) continue;
+        const int f0 = t_.edges.incident[i];
+        if (input_point(f0, e.a) == input_point(other, e.a) && input_point(f0, e.b) == input_point(other, e.b))
+          t_.crossed_line_edges.push_back({e.a, e.b, part});
+      }
+    }
+    std::sort(t_.crossed_line_edges.begin(), t_.crossed_line_edges.end());
+  }
+
   // Interior edges of one part whose two triangles do not share the input points of the edge:
   // a crack inside the surface that only welding closed.
   void count_sewn_edges() {
     std::vector<char> cracked(soup_.groups.size(), 0);
-    for (int g : colocated_groups_) cracked[g] = 1;
+    for (int g : crack_groups_) cracked[g] = 1;
     for (const EdgeTable::Edge& e : t_.edges.edges) {
       if (e.line) continue;
       const int f0 = t_.edges.incident[e.first], f1 = t_.edges.incident[e.first + 1];
+      if (multi_surface_group_[group_[f0]]) continue;
       auto input_point = [&](int f, int v) {
         for (int i = 0; i < 3; ++i)
           if (welded_[soup_.triangles[input_triangle_[f]][i]] == v) return soup_.triangles[input_triangle_[f]][i];
@@ -449,6 +545,9 @@ class ModelBuilder {
   std::vector<int> part_group_;      // part -> group
   std::vector<int> group_part_;      // group -> part (explicit parts only)
   std::vector<int> colocated_groups_;
+  std::unordered_set<uint64_t> colocated_keys_;  // (welded vertex, group) with several input points
+  std::vector<int> crack_groups_;                // groups with crack vertices
+  std::vector<char> multi_surface_group_;        // groups holding several surfaces
   std::vector<int> order_;           // triangles in BFS order per part
 };
 

@@ -106,7 +106,14 @@ struct BuildReport {
   /// Manifold edges inside one group whose two triangles used different input points for the
   /// edge: a crack inside a surface that only welding closed.
   int sewn_edges_within_group = 0;
-  std::vector<std::string> cracked_groups;  // groups with colocated points or sewn edges
+  /// Vertices where one group uses several distinct input points although no contact runs there
+  /// along which the group lies on both sides (an internal border), or more than two points
+  /// (RINGMesh's rule): a crack inside a surface, invisible once welded (CloudSpin.ml).
+  int crack_vertices = 0;
+  std::vector<std::string> cracked_groups;  // groups with sewn edges or crack vertices
+  /// Groups with an edge of 3+ of their own triangles: several surfaces in one group (a Medit
+  /// soup with all refs 0), where cracks cannot be told from contacts and are not searched.
+  std::vector<std::string> multi_surface_groups;
   std::vector<Vec3> crack_locations;        // a few examples, local frame
   int inconsistent_orientation_edges = 0;   // explicit parts whose triangles disagree
   int flipped_triangles = 0;                // triangles reoriented to make a part consistent
