@@ -1,27 +1,15 @@
 #include "modules/tetmesh/region_point.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "framework/core/error.h"
+#include "modules/tetmesh/triangle_tree.h"
 
 namespace voroseal {
 
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle3 = K::Triangle_3;
-using TriangleIterator = std::vector<Triangle3>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<K, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-
-K::Point_3 to_cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 /// Signed solid angle of triangle (a, b, c) seen from p (Van Oosterom & Strackee 1983).
 double solid_angle(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3& p) {
@@ -46,7 +34,7 @@ struct Candidate {
   Vec3 centroid;
   Vec3 inward;  // unit direction into the region
   double area = 0.0;
-  int tree_index = -1;  // the triangle in the AABB tree (skipped by the ray), -1 if absent
+  int triangle = -1;  // flattened index (skipped by the ray)
   double score = 0.0;
 };
 
@@ -72,22 +60,10 @@ double winding_number(const StructuralModel& model, const std::vector<Side>& sid
 std::vector<RegionPoint> region_points(const StructuralModel& model) {
   if (model.regions.empty()) throw ModelError("model '" + model.name + "' has no regions to tet-mesh");
 
-  // All model triangles in an AABB tree (degenerate ones left out: they cannot be the nearest
-  // surface without one of their neighbours being as near, and CGAL's queries reject them).
+  // All model triangles, for clearance and ray queries.
   const ModelTriangles flat = flatten(model);
-  std::vector<Triangle3> triangles;
-  std::vector<int> tree_index_of(flat.triangles.size(), -1);
-  triangles.reserve(flat.triangles.size());
-  for (size_t t = 0; t < flat.triangles.size(); ++t) {
-    const Triangle& f = flat.triangles[t];
-    const Triangle3 tri(to_cgal(model.vertices[f[0]]), to_cgal(model.vertices[f[1]]), to_cgal(model.vertices[f[2]]));
-    if (tri.is_degenerate()) continue;
-    tree_index_of[t] = static_cast<int>(triangles.size());
-    triangles.push_back(tri);
-  }
-  if (triangles.empty()) throw ModelError("model '" + model.name + "' has no non-degenerate triangle");
-  Tree tree(triangles.cbegin(), triangles.cend());
-  tree.accelerate_distance_queries();
+  const TriangleTree tree(model.vertices, flat.triangles);
+  if (tree.empty()) throw ModelError("model '" + model.name + "' has no non-degenerate triangle");
 
   // First triangle index of each part in the flattened order.
   std::vector<int> part_first(model.parts.size() + 1, 0);
@@ -115,12 +91,12 @@ std::vector<RegionPoint> region_points(const StructuralModel& model) {
         const Vec3& c = model.vertices[f[2]];
         const Vec3 normal = (b - a).cross(c - a);
         const double twice_area = normal.norm();
-        if (!(twice_area > 0.0) || tree_index_of[t] < 0) continue;
+        if (!(twice_area > 0.0)) continue;
         Candidate cand;
         cand.centroid = (a + b + c) / 3.0;
         cand.inward = (side.positive ? 1.0 : -1.0) * normal / twice_area;
         cand.area = 0.5 * twice_area;
-        cand.tree_index = tree_index_of[t];
+        cand.triangle = t;
         cand.score = cand.area * triangle_quality(a, b, c);
         candidates.push_back(cand);
       }
@@ -136,21 +112,13 @@ std::vector<RegionPoint> region_points(const StructuralModel& model) {
     // thickness near the candidate, e.g. a ray grazing along a thin layer).
     std::vector<RegionPoint> points;
     for (const Candidate& cand : candidates) {
-      const K::Ray_3 ray(to_cgal(cand.centroid), K::Vector_3(cand.inward.x(), cand.inward.y(), cand.inward.z()));
-      const TriangleIterator source = triangles.cbegin() + cand.tree_index;
-      const auto hit = tree.first_intersection(ray, [&](const TriangleIterator& it) { return it == source; });
-      double reach = diagonal;
-      if (hit) {
-        if (const K::Point_3* q = boost::get<K::Point_3>(&hit->first))
-          reach = std::sqrt(CGAL::to_double(CGAL::squared_distance(ray.source(), *q)));
-        else
-          reach = 0.0;  // the ray runs inside a coplanar triangle: a fold back onto itself
-      }
+      double reach = tree.ray_hit(cand.centroid, cand.inward, cand.triangle);
+      if (!std::isfinite(reach)) reach = diagonal;
       for (double offset : {0.5 * reach, std::min(0.5 * reach, 0.5 * std::sqrt(cand.area))}) {
         if (!(offset > 0.0)) continue;
         RegionPoint rp;
         rp.point = cand.centroid + offset * cand.inward;
-        rp.clearance = std::sqrt(CGAL::to_double(tree.squared_distance(to_cgal(rp.point))));
+        rp.clearance = tree.distance(rp.point);
         points.push_back(rp);
       }
     }

@@ -55,4 +55,25 @@ PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
   return map;
 }
 
+void reorder_facets(tetgenio& in, PlcMap& map, const std::vector<int>& order) {
+  const int n = in.numberoffacets;
+  // The facet structs only hold pointers: moving them moves the polygons, nothing is freed.
+  auto* facets = new tetgenio::facet[n];
+  auto* markers = new int[n];
+  std::vector<Triangle> triangles(n);
+  std::vector<int> parts(n);
+  for (int i = 0; i < n; ++i) {
+    facets[i] = in.facetlist[order[i]];
+    markers[i] = in.facetmarkerlist[order[i]];
+    triangles[i] = map.facet_triangle[order[i]];
+    parts[i] = map.facet_part[order[i]];
+  }
+  delete[] in.facetlist;
+  delete[] in.facetmarkerlist;
+  in.facetlist = facets;
+  in.facetmarkerlist = markers;
+  map.facet_triangle = std::move(triangles);
+  map.facet_part = std::move(parts);
+}
+
 }  // namespace voroseal

@@ -32,4 +32,10 @@ struct PlcMap {
 ///         interior point (see region_points()).
 PlcMap build_plc(const StructuralModel& model, tetgenio& in);
 
+/// Reorders the facets of `in` (and `map` with them) so that position i holds the facet that
+/// was at position order[i]. TetGen recovers the facets' edges in that order under Y, and some
+/// orders trip over TetGen 1.5's weaknesses where others do not.
+/// \pre order is a permutation of [0, in.numberoffacets).
+void reorder_facets(tetgenio& in, PlcMap& map, const std::vector<int>& order);
+
 }  // namespace voroseal

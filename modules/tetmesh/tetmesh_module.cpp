@@ -1,0 +1,125 @@
+// `voroseal tetmesh MODEL -o OUT [--quality 1.5] [--min-dihedral 10] [--max-volume V]`:
+// tet-meshes the current model with TetGen, keeping its surfaces (conformal tets), sets
+// context.volume and report["tetmesh"], and writes the mesh when an output is given.
+#include <chrono>
+#include <cmath>
+
+#include "framework/core/error.h"
+#include "framework/host/module.h"
+#include "framework/host/registry.h"
+#include "io/model_io.h"
+#include "modules/tetmesh/tetrahedralize.h"
+#include "modules/tetmesh/volume_quality.h"
+
+namespace voroseal {
+
+namespace {
+
+class TetmeshModule : public Module {
+ public:
+  std::string name() const override { return "tetmesh"; }
+  std::string description() const override {
+    return "tetrahedral mesh of the model's regions with TetGen, conformal to its surfaces";
+  }
+  std::vector<ParameterSpec> parameters() const override {
+    ParameterSpec output{"output", ParameterType::Path, nullptr,
+                         "volume mesh file (.mesh, .vtu, .msh, .node/.ele); not written when absent"};
+    output.short_name = "o";
+    ParameterSpec quality{"quality", ParameterType::Double, 1.5,
+                          "maximum radius-edge ratio TetGen refines to (switch q); 0 turns refinement off"};
+    quality.min = 0.0;
+    ParameterSpec dihedral{"min-dihedral", ParameterType::Double, 10.0,
+                           "minimum dihedral angle in degrees TetGen refines to (q<ratio>/<angle>); 0: "
+                           "TetGen's default (none)"};
+    dihedral.min = 0.0;
+    dihedral.max = 60.0;
+    ParameterSpec volume{"max-volume", ParameterType::Double, nullptr,
+                         "maximum tet volume in model units^3 (switch a); no bound when absent"};
+    volume.min = 0.0;
+    ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
+                       "keep the surface triangles exactly (switch Y): tets conformal to the surfaces"};
+    ParameterSpec slivers{"sliver-passes", ParameterType::Int, 2,
+                          "extra TetGen runs with interior points added next to slivers on the kept surface"};
+    slivers.min = 0;
+    slivers.max = 10;
+    return {output, quality, dihedral, volume, keep, slivers};
+  }
+
+  void run(Context& context, const Parameters& parameters) const override {
+    if (!context.model) throw ModelError("tetmesh needs a model");
+    const StructuralModel& model = *context.model;
+    TetmeshOptions options;
+    options.radius_edge_ratio = parameters.get_double("quality");
+    options.min_dihedral_deg = parameters.get_double("min-dihedral");
+    if (parameters.has("max-volume")) options.max_volume = parameters.get_double("max-volume");
+    options.keep_surface = parameters.get_bool("keep-surface");
+    options.sliver_passes = static_cast<int>(parameters.get_int("sliver-passes"));
+
+    const auto start = std::chrono::steady_clock::now();
+    context.progress.start("tetmesh " + model.name, 0);
+    TetmeshRun run;
+    auto mesh = std::make_shared<VolumeMesh>(tetrahedralize(model, options, context.log, &run));
+    context.progress.finish();
+    const VolumeQuality quality = measure_volume(*mesh);
+    const long nonconforming = static_cast<long>(model_triangles_not_in_tets(model, *mesh).size());
+
+    nlohmann::json regions = nlohmann::json::array();
+    double max_error = 0.0;
+    for (size_t r = 0; r < model.regions.size(); ++r) {
+      const double enclosed = -model.signed_volume(model.regions[r].sides);
+      const double meshed = r < quality.region_volume.size() ? quality.region_volume[r] : 0.0;
+      const long tets = r < quality.region_tets.size() ? quality.region_tets[r] : 0;
+      const double error = enclosed != 0.0 ? std::abs(meshed - enclosed) / std::abs(enclosed) : std::abs(meshed);
+      max_error = std::max(max_error, error);
+      regions.push_back({{"name", model.regions[r].name},
+                         {"tets", tets},
+                         {"volume", meshed},
+                         {"enclosed_volume", enclosed},
+                         {"relative_error", error}});
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    nlohmann::json report = {
+        {"switches", run.switches},
+        {"input", {{"points", run.input_points}, {"triangles", run.input_facets}, {"regions", model.regions.size()}}},
+        {"vertices", quality.vertices},
+        {"steiner_points", run.steiner_points},
+        {"tets", quality.tets},
+        {"triangles", quality.triangles},
+        {"regions_meshed", quality.regions},
+        {"split_triangles", run.split_facets},
+        {"attempts", run.attempts},
+        {"sliver_passes", run.sliver_passes},
+        {"sliver_points", run.sliver_points},
+        {"nonconforming_triangles", nonconforming},
+        {"nonpositive_tets", quality.nonpositive_tets},
+        {"min_dihedral_deg", quality.min_dihedral_deg},
+        {"max_dihedral_deg", quality.max_dihedral_deg},
+        {"max_radius_edge", quality.max_radius_edge},
+        {"mean_radius_edge", quality.mean_radius_edge},
+        {"max_relative_volume_error", max_error},
+        {"regions", regions},
+        {"seconds", {{"plc", run.plc_seconds}, {"tetgen", run.tetgen_seconds}, {"total", seconds}}},
+    };
+    context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
+                     " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
+                     std::to_string(quality.max_radius_edge));
+    if (parameters.has("output")) {
+      const std::string path = parameters.get_string("output");
+      WriteOptions write;
+      write.protected_paths = {context.input_path};
+      write_volume_mesh(*mesh, path, write);
+      report["output"] = path;
+      context.log.info("wrote " + path);
+    }
+    context.report["tetmesh"] = report;
+    context.volume = mesh;
+  }
+};
+
+}  // namespace
+
+}  // namespace voroseal
+
+void voroseal_register_tetmesh(voroseal::ModuleRegistry& registry) {
+  registry.add(std::make_unique<voroseal::TetmeshModule>());
+}

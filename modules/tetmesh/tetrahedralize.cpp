@@ -1,0 +1,631 @@
+#include "modules/tetmesh/tetrahedralize.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "framework/core/error.h"
+#include "modules/tetmesh/tetgen_plc.h"
+#include "modules/tetmesh/tetgen_run.h"
+#include "modules/tetmesh/triangle_tree.h"
+#include "modules/tetmesh/volume_quality.h"
+
+namespace voroseal {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string number(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.10g", v);
+  return buffer;
+}
+
+std::vector<int> identity(int n) {
+  std::vector<int> v(n);
+  for (int i = 0; i < n; ++i) v[i] = i;
+  return v;
+}
+
+/// TetGen's failure codes (terminatetetgen() in tetgen.h, TETLIBRARY mode throws them).
+std::string failure_reason(int code) {
+  switch (code) {
+    case kTetgenCrashed: return "TetGen crashed (a failed internal assertion); TetGen 1.5 cannot recover the surfaces "
+                                "of this input without changing them, poorly shaped (needle) triangles are the usual "
+                                "cause: remesh the model first, or mesh without keeping the surface";
+    case 1: return "out of memory";
+    case 2: return "internal error (TetGen met a configuration it cannot handle; nearly degenerate or "
+                   "intersecting input is the usual cause)";
+    case 3: return "self-intersecting surfaces (two facets intersect, or a facet is duplicated)";
+    case 4: return "a very small input feature (vertices or a vertex and a facet closer than TetGen's "
+                   "tolerance, switch T)";
+    case 5: return "two very close input facets";
+    case 10: return "invalid input (bad PLC)";
+    default: return "unknown error";
+  }
+}
+
+/// The last `max_lines` lines of `text`.
+std::string tail(const std::string& text, int max_lines) {
+  int lines = 0;
+  size_t pos = text.size();
+  while (pos > 0) {
+    const size_t nl = text.rfind('\n', pos - 1);
+    if (nl == std::string::npos) return text;
+    if (nl + 1 < text.size() && ++lines > max_lines) return "...\n" + text.substr(nl + 1);
+    pos = nl;
+  }
+  return text;
+}
+
+using Key = std::array<int, 3>;
+struct KeyHash {
+  size_t operator()(const Key& k) const {
+    size_t h = static_cast<size_t>(k[0]) * 73856093u;
+    h ^= static_cast<size_t>(k[1]) * 19349663u + (h << 6) + (h >> 2);
+    h ^= static_cast<size_t>(k[2]) * 83492791u + (h << 6) + (h >> 2);
+    return h;
+  }
+};
+Key sorted_key(int a, int b, int c) {
+  Key k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+/// Reads the surface parts TetGen names in its output:
+///  - "Facet #i intersects|duplicates facet #j" (-d report, one line per triangle pair found);
+///  - "1st: [a, b, c] #n" / "2nd: [a, b, d] #m" (the pair a stop reports), n and m being the
+///    1-based facet positions (TetGen's shellmark): facet n is triangle n − 1;
+///  - segments as "[a, b]" (1st/2nd lines) or "(a, b) and (c, d)", a and b point numbers: the
+///    parts of the facets holding that edge.
+/// Pairs of parts reported together are counted once per distinct triangle or segment pair, with
+/// an example location.
+struct NamedParts {
+  std::set<int> parts;
+  struct Pair {
+    int count = 0;
+    Vec3 where = Vec3::Zero();  // local frame
+  };
+  std::map<std::pair<int, int>, Pair> pairs;
+};
+
+NamedParts parts_named(const std::string& text, const StructuralModel& model, const PlcMap& map) {
+  NamedParts named;
+  const int facets = static_cast<int>(map.facet_part.size());
+  const long points = static_cast<long>(map.point_vertex.size());
+  auto centroid = [&](const Triangle& t) {
+    return Vec3((model.vertices[t[0]] + model.vertices[t[1]] + model.vertices[t[2]]) / 3.0);
+  };
+  // Parts (and a location) of a facet given by its 1-based position.
+  auto facet = [&](long n, Vec3& where) {
+    std::set<int> parts;
+    if (n >= 1 && n <= facets) {
+      parts.insert(map.facet_part[n - 1]);
+      where = centroid(map.facet_triangle[n - 1]);
+    }
+    return parts;
+  };
+  // Parts (and a location) of the facets holding the segment between points a and b.
+  auto segment = [&](long a, long b, Vec3& where) {
+    std::set<int> parts;
+    if (a < 0 || b < 0 || a >= points || b >= points) return parts;
+    const int va = map.point_vertex[a], vb = map.point_vertex[b];
+    for (int f = 0; f < facets; ++f) {
+      const Triangle& t = map.facet_triangle[f];
+      if ((t[0] == va || t[1] == va || t[2] == va) && (t[0] == vb || t[1] == vb || t[2] == vb))
+        parts.insert(map.facet_part[f]);
+    }
+    where = 0.5 * (model.vertices[va] + model.vertices[vb]);
+    return parts;
+  };
+  auto add = [&](const std::set<int>& first, const std::set<int>& second, const Vec3& where) {
+    named.parts.insert(first.begin(), first.end());
+    named.parts.insert(second.begin(), second.end());
+    std::set<std::pair<int, int>> keys;
+    for (int a : first)
+      for (int b : second)
+        if (a != b || (first.size() == 1 && second.size() == 1)) keys.insert({std::min(a, b), std::max(a, b)});
+    for (const auto& key : keys) {
+      NamedParts::Pair& entry = named.pairs[key];
+      if (entry.count++ == 0) entry.where = where;
+    }
+  };
+
+  std::set<std::pair<long, long>> seen;
+  static const std::regex pair_re(R"(Facet #(\d+) (?:intersects|duplicates) facet #(\d+))");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), pair_re); it != std::sregex_iterator(); ++it) {
+    const long i = std::stol((*it)[1]), j = std::stol((*it)[2]);
+    if (!seen.insert({std::min(i, j), std::max(i, j)}).second) continue;
+    Vec3 where, unused;
+    add(facet(i, where), facet(j, unused), where);
+  }
+  // An element of a stop report: "[a, b, c] #n" (a facet) or "[a, b]" (a segment).
+  static const std::regex element_re(R"((1st|2nd):\s*\[\s*(\d+)\s*,\s*(\d+)\s*(?:,\s*(\d+)\s*)?\]\s*(?:#(\d+))?)");
+  std::set<int> first_parts;
+  Vec3 first_where = Vec3::Zero();
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), element_re); it != std::sregex_iterator(); ++it) {
+    const auto& m = *it;
+    Vec3 where = Vec3::Zero();
+    const std::set<int> parts = m[4].matched ? (m[5].matched ? facet(std::stol(m[5]), where) : std::set<int>{})
+                                             : segment(std::stol(m[2]), std::stol(m[3]), where);
+    if (m[1] == "1st") {
+      first_parts = parts;
+      first_where = where;
+    } else {
+      add(first_parts, parts, first_where);
+      first_parts.clear();
+    }
+  }
+  named.parts.insert(first_parts.begin(), first_parts.end());
+  static const std::regex segments_re(R"(\(\s*(\d+)\s*,\s*(\d+)\s*\)\s*and\s*\(\s*(\d+)\s*,\s*(\d+)\s*\))");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), segments_re); it != std::sregex_iterator(); ++it) {
+    Vec3 where, unused;
+    const auto first = segment(std::stol((*it)[1]), std::stol((*it)[2]), where);
+    add(first, segment(std::stol((*it)[3]), std::stol((*it)[4]), unused), where);
+  }
+  return named;
+}
+
+std::string part_label(const StructuralModel& model, int part) { return "'" + model.parts[part].name + "'"; }
+
+std::string file_point(const StructuralModel& model, const Vec3& local) {
+  const Vec3 p = local + model.frame.origin;
+  return "(" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + ")";
+}
+
+/// Builds the error for a failed TetGen run: the reason, the surfaces involved, TetGen's output.
+[[noreturn]] void throw_failure(int code, const std::string& printed, const StructuralModel& model,
+                                const PlcMap& map, tetgenio& in, Logger& log) {
+  NamedParts named = parts_named(printed, model, map);
+  if (code == 3 || code == 5 || named.parts.empty()) {
+    // TetGen stops at the first intersection it meets; -d lists every intersecting pair.
+    tetgenio out;
+    std::string detected;
+    const int dcode = run_tetgen("pd", in, out, detected);
+    log.debug("TetGen -d (self-intersection detection) output:\n" + detected);
+    if (dcode != 0) log.debug("TetGen -d failed too (code " + std::to_string(dcode) + ")");
+    if (dcode == 0) {
+      NamedParts more = parts_named(detected, model, map);
+      named.parts.insert(more.parts.begin(), more.parts.end());
+      for (const auto& [key, value] : more.pairs) {
+        NamedParts::Pair& entry = named.pairs[key];
+        if (entry.count == 0) entry.where = value.where;
+        entry.count = std::max(entry.count, value.count);
+      }
+      // The intersecting triangles TetGen kept, with their facet markers.
+      if (out.trifacemarkerlist != nullptr)
+        for (int f = 0; f < out.numberoftrifaces; ++f) {
+          const int part = out.trifacemarkerlist[f] - 1;
+          if (part >= 0 && part < static_cast<int>(model.parts.size())) named.parts.insert(part);
+        }
+    }
+  }
+
+  std::ostringstream message;
+  message << "TetGen failed on model '" << model.name << "' (code " << code << ": " << failure_reason(code) << ")";
+  if (!named.pairs.empty()) {
+    message << (code == 3 ? "; intersecting surfaces:" : "; surfaces reported together:");
+    int shown = 0;
+    for (const auto& [key, value] : named.pairs) {
+      if (shown++ == 12) {
+        message << " ... (" << named.pairs.size() << " pairs of surfaces in all)";
+        break;
+      }
+      message << (shown > 1 ? "," : "") << " " << part_label(model, key.first);
+      if (key.first == key.second)
+        message << " with itself";
+      else
+        message << " and " << part_label(model, key.second);
+      message << " (" << value.count << " pair" << (value.count > 1 ? "s" : "") << " of triangles or edges, near "
+              << file_point(model, value.where) << ")";
+    }
+  }
+  if (!named.parts.empty()) {
+    message << "; surfaces involved:";
+    for (int p : named.parts) message << " " << part_label(model, p);
+  }
+  if (!printed.empty()) message << "\nTetGen output:\n" << tail(printed, 30);
+  throw MesherError(message.str());
+}
+
+/// Gives tets without a region (tet_region −1) the region of a neighbour across a face that is
+/// not a surface triangle, repeatedly. TetGen 1.5 under Y sometimes leaves attribute 0 on a few
+/// tets next to Steiner points it added while recovering the surfaces (seen on modelA2 and
+/// modelA4); nothing separates them from their neighbours, so they are in their region.
+/// Returns how many tets got a region.
+long label_from_neighbours(const tetgenio& out, VolumeMesh& mesh) {
+  std::unordered_map<Key, std::array<int, 2>, KeyHash> face_tets;
+  face_tets.reserve(2 * mesh.tets.size());
+  for (int t = 0; t < static_cast<int>(mesh.tets.size()); ++t) {
+    const Tetrahedron& tet = mesh.tets[t];
+    for (int skip = 0; skip < 4; ++skip) {
+      const Key key = sorted_key(tet[(skip + 1) % 4], tet[(skip + 2) % 4], tet[(skip + 3) % 4]);
+      auto [it, inserted] = face_tets.try_emplace(key, std::array<int, 2>{t, -1});
+      if (!inserted) it->second[1] = t;
+    }
+  }
+  for (int f = 0; f < out.numberoftrifaces; ++f) {
+    const int* c = out.trifacelist + 3 * f;
+    face_tets.erase(sorted_key(c[0], c[1], c[2]));  // surface triangles separate regions
+  }
+  long labelled = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& [key, tets] : face_tets) {
+      if (tets[1] < 0) continue;
+      int& a = mesh.tet_region[tets[0]];
+      int& b = mesh.tet_region[tets[1]];
+      if ((a < 0) != (b < 0)) {
+        (a < 0 ? a : b) = std::max(a, b);
+        ++labelled;
+        changed = true;
+      }
+    }
+  }
+  return labelled;
+}
+
+/// TetGen's output as a VolumeMesh (see tetrahedralize()), with what had to be repaired.
+struct ConvertedMesh {
+  VolumeMesh mesh;
+  int split_facets = 0;       // model triangles not found whole among TetGen's faces
+  long relabelled_tets = 0;   // tets TetGen left without a region
+};
+
+ConvertedMesh to_volume_mesh(const StructuralModel& model, const PlcMap& map, const tetgenio& in, int plc_points,
+                             const tetgenio& out) {
+  ConvertedMesh result;
+  VolumeMesh& mesh = result.mesh;
+  mesh.frame = model.frame;
+  for (const Region& r : model.regions) mesh.region_names.push_back(r.name);
+  for (const SurfacePart& p : model.parts) mesh.surface_names.push_back(p.name);
+
+  mesh.vertices.resize(out.numberofpoints);
+  for (int i = 0; i < out.numberofpoints; ++i)
+    mesh.vertices[i] = Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
+  // With J the PLC points keep their numbers: the triangles map back by index.
+  bool same_points = out.numberofpoints >= plc_points;
+  for (int i = 0; same_points && i < plc_points; ++i)
+    for (int d = 0; d < 3; ++d) same_points = same_points && out.pointlist[3 * i + d] == in.pointlist[3 * i + d];
+  if (!same_points) throw MesherError("TetGen renumbered or moved the input points of model '" + model.name + "'");
+
+  if (out.numberoftetrahedra <= 0) throw MesherError("TetGen produced no tetrahedra for model '" + model.name + "'");
+  if (out.numberoftetrahedronattributes < 1 || out.tetrahedronattributelist == nullptr)
+    throw MesherError("TetGen returned no region attributes (switch A) for model '" + model.name + "'");
+  const int regions = static_cast<int>(model.regions.size());
+  mesh.tets.resize(out.numberoftetrahedra);
+  mesh.tet_region.resize(out.numberoftetrahedra);
+  std::vector<long> tets_per_region(regions, 0);
+  long outside = 0;
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    const int* c = out.tetrahedronlist + t * out.numberofcorners;
+    Tetrahedron tet{c[0], c[1], c[2], c[3]};
+    const Vec3& a = mesh.vertices[tet[0]];
+    if ((mesh.vertices[tet[1]] - a).cross(mesh.vertices[tet[2]] - a).dot(mesh.vertices[tet[3]] - a) < 0.0)
+      std::swap(tet[2], tet[3]);
+    mesh.tets[t] = tet;
+    const double attribute = out.tetrahedronattributelist[t * out.numberoftetrahedronattributes];
+    const int region = static_cast<int>(std::lround(attribute)) - 1;
+    if (region < 0 || region >= regions) {
+      ++outside;
+      mesh.tet_region[t] = -1;
+    } else {
+      mesh.tet_region[t] = region;
+      ++tets_per_region[region];
+    }
+  }
+  if (outside > 0) {
+    const long labelled = label_from_neighbours(out, mesh);
+    std::fill(tets_per_region.begin(), tets_per_region.end(), 0);
+    for (int r : mesh.tet_region)
+      if (r >= 0) ++tets_per_region[r];
+    result.relabelled_tets = labelled;
+    outside -= labelled;
+  }
+  if (outside > 0)
+    throw MesherError("TetGen put " + std::to_string(outside) + " tets of model '" + model.name +
+                      "' in no region: a volume enclosed by the surfaces is not a region of the model");
+  for (int r = 0; r < regions; ++r)
+    if (tets_per_region[r] == 0)
+      throw MesherError("region '" + model.regions[r].name + "' of model '" + model.name +
+                        "' got no tet: its region point fell in another region's volume (the surfaces "
+                        "between them do not separate them)");
+
+  // Boundary and interface triangles, oriented like the model triangle they are.
+  std::unordered_map<Key, int, KeyHash> facet_of;
+  facet_of.reserve(map.facet_triangle.size());
+  for (size_t f = 0; f < map.facet_triangle.size(); ++f) {
+    const Triangle& t = map.facet_triangle[f];
+    facet_of.emplace(sorted_key(map.vertex_point[t[0]], map.vertex_point[t[1]], map.vertex_point[t[2]]),
+                     static_cast<int>(f));
+  }
+  std::vector<char> facet_found(map.facet_triangle.size(), 0);
+  mesh.triangles.reserve(out.numberoftrifaces);
+  mesh.triangle_surface.reserve(out.numberoftrifaces);
+  for (int f = 0; f < out.numberoftrifaces; ++f) {
+    const int* c = out.trifacelist + 3 * f;
+    const auto it = facet_of.find(sorted_key(c[0], c[1], c[2]));
+    if (it != facet_of.end()) {
+      const Triangle& t = map.facet_triangle[it->second];
+      facet_found[it->second] = 1;
+      mesh.triangles.push_back({map.vertex_point[t[0]], map.vertex_point[t[1]], map.vertex_point[t[2]]});
+      mesh.triangle_surface.push_back(map.facet_part[it->second]);
+    } else {
+      const int marker = out.trifacemarkerlist != nullptr ? out.trifacemarkerlist[f] : 0;
+      if (marker < 1) continue;  // not on any model surface (cannot happen with a closed model)
+      mesh.triangles.push_back({c[0], c[1], c[2]});
+      mesh.triangle_surface.push_back(marker - 1);
+    }
+  }
+  result.split_facets = static_cast<int>(std::count(facet_found.begin(), facet_found.end(), 0));
+  return result;
+}
+
+/// Smallest dihedral angle of each tet, in degrees.
+double min_dihedral(const VolumeMesh& mesh, const Tetrahedron& t) {
+  const auto angles = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
+  return *std::min_element(angles.begin(), angles.end());
+}
+
+double min_dihedral(const VolumeMesh& mesh) {
+  double smallest = 180.0;
+#pragma omp parallel for reduction(min : smallest)
+  for (long t = 0; t < static_cast<long>(mesh.tets.size()); ++t) smallest = std::min(smallest, min_dihedral(mesh, mesh.tets[t]));
+  return smallest;
+}
+
+double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto angle = [](const Vec3& u, const Vec3& v) { return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / M_PI; };
+  return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
+}
+
+/// Interior points that break surface slivers: tets below `bound_deg` with a face on a
+/// well-shaped surface triangle (smallest angle >= 20°; slivers on needles cannot be fixed
+/// without changing the surface). Such a tet spans a slight fold between surface triangles, or
+/// lies flat on one, and TetGen cannot split it under Y: its circumcentre encroaches upon the
+/// surface. A point moved from the tet's centroid into the region, by min(0.3 × mean edge,
+/// 0.5 × circumradius) along the mean inward normal of its surface faces, lies inside its
+/// circumsphere, so the next Delaunay tetrahedralization no longer holds the sliver. The point
+/// must be reached from the centroid without crossing a surface and keep 0.15 × mean edge from
+/// every surface; points closer than 0.3 × mean edge to an earlier one are dropped.
+/// `unfixable` gets the smallest dihedral angle of the slivers this cannot treat (on needle
+/// triangles, or with no surface face: TetGen's refinement did not split them), 180 if none:
+/// when the worst tet is one of them, another pass cannot raise the minimum.
+std::vector<Vec3> sliver_points(const VolumeMesh& mesh, const TriangleTree& surfaces, double bound_deg,
+                                const std::vector<Vec3>& earlier, double& unfixable) {
+  unfixable = 180.0;
+  std::unordered_set<Key, KeyHash> surface_faces;
+  surface_faces.reserve(2 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) surface_faces.insert(sorted_key(t[0], t[1], t[2]));
+  std::vector<Vec3> points;
+  std::vector<double> spacing;
+  for (const Tetrahedron& t : mesh.tets) {
+    const double angle = min_dihedral(mesh, t);
+    if (angle >= bound_deg) continue;
+    const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]};
+    Vec3 inward = Vec3::Zero();
+    bool usable = true;
+    int faces = 0;
+    for (int opposite = 0; opposite < 4 && usable; ++opposite) {
+      const int i = (opposite + 1) % 4, j = (opposite + 2) % 4, k = (opposite + 3) % 4;
+      if (!surface_faces.count(sorted_key(t[i], t[j], t[k]))) continue;
+      ++faces;
+      usable = smallest_angle_deg(p[i], p[j], p[k]) >= 20.0;
+      Vec3 n = (p[j] - p[i]).cross(p[k] - p[i]).normalized();
+      if (n.dot(p[opposite] - p[i]) < 0.0) n = -n;
+      inward += n;
+    }
+    if (faces == 0 || !usable) unfixable = std::min(unfixable, angle);
+    if (faces == 0 || !usable || !(inward.norm() > 1e-9)) continue;
+    const Vec3 centroid = (p[0] + p[1] + p[2] + p[3]) / 4.0;
+    double mean_edge = 0.0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) mean_edge += (p[a] - p[b]).norm() / 6.0;
+    const double ratio = radius_edge_ratio(p[0], p[1], p[2], p[3]);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) shortest = std::min(shortest, (p[a] - p[b]).norm());
+    const double circumradius = std::isfinite(ratio) ? ratio * shortest : mean_edge;
+    const Vec3 candidate = centroid + std::min(0.3 * mean_edge, 0.5 * circumradius) * inward.normalized();
+    if (surfaces.segment_hits(centroid, candidate) || surfaces.distance(candidate) < 0.15 * mean_edge) continue;
+    bool crowded = false;
+    for (size_t q = 0; q < earlier.size() && !crowded; ++q) crowded = (earlier[q] - candidate).norm() < 0.3 * mean_edge;
+    for (size_t q = 0; q < points.size() && !crowded; ++q) crowded = (points[q] - candidate).norm() < 0.3 * std::max(mean_edge, spacing[q]);
+    if (crowded) continue;
+    points.push_back(candidate);
+    spacing.push_back(mean_edge);
+  }
+  return points;
+}
+
+}  // namespace
+
+std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
+  std::string s = "p";
+  if (options.radius_edge_ratio > 0.0) {
+    s += "q" + number(options.radius_edge_ratio);
+    if (options.min_dihedral_deg > 0.0) s += "/" + number(options.min_dihedral_deg);
+  }
+  if (options.max_volume > 0.0) s += "a" + number(options.max_volume);
+  s += "A";
+  if (options.keep_surface) s += "Y";
+  s += "J";
+  if (quiet) s += "Q";
+  return s;
+}
+
+VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                          TetmeshRun* run) {
+  if (!(options.radius_edge_ratio == 0.0 || (options.radius_edge_ratio >= 1.0 && std::isfinite(options.radius_edge_ratio))))
+    throw ParameterError("radius-edge ratio " + number(options.radius_edge_ratio) +
+                         " out of range: 0 (no quality refinement) or a finite value >= 1");
+  if (!(options.min_dihedral_deg >= 0.0 && options.min_dihedral_deg < 70.0))
+    throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
+  if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
+    throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
+  if (!(options.sliver_passes >= 0 && options.sliver_passes <= 10))
+    throw ParameterError("sliver passes " + std::to_string(options.sliver_passes) + " out of range [0, 10]");
+  if (!(options.attempts >= 1 && options.attempts <= 10))
+    throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
+
+  TetmeshRun local_run;
+  TetmeshRun& info = run != nullptr ? *run : local_run;
+  info = TetmeshRun{};
+
+  auto start = std::chrono::steady_clock::now();
+  tetgenio in;
+  PlcMap map = build_plc(model, in);
+  const int plc_points = in.numberofpoints;
+  const std::vector<REAL> plc_coordinates(in.pointlist, in.pointlist + 3 * plc_points);
+  info.plc_seconds = seconds_since(start);
+  info.region_points = map.region_points;
+  info.input_points = plc_points;
+  info.input_facets = in.numberoffacets;
+  log.debug("tetmesh: PLC of " + std::to_string(plc_points) + " points, " + std::to_string(in.numberoffacets) +
+            " facets, " + std::to_string(in.numberofregions) + " region points (" + number(info.plc_seconds) + " s)");
+  info.switches = tetgen_switches(options, log.level() < LogLevel::Debug);
+
+  auto tetgen = [&](tetgenio& out, std::string& printed, const std::string& what) {
+    const auto began = std::chrono::steady_clock::now();
+    const int code = run_tetgen(info.switches, in, out, printed);
+    info.tetgen_seconds += seconds_since(began);
+    if (!printed.empty()) log.debug("TetGen -" + info.switches + " output (" + what + "):\n" + printed);
+    return code;
+  };
+
+  // First run. Under Y, TetGen 1.5 recovers the facets' edges by flips in facet order and, on
+  // some inputs, trips one of its assertions or leaves a Steiner point on an edge; another
+  // order often goes through. So a crash, an internal error or split triangles lead to more
+  // attempts with the facets reversed, then shuffled; the best run wins (no split triangles,
+  // else the fewest). An error TetGen reports about the input itself (intersections, features
+  // below its tolerance, bad PLC) does not depend on the order and stops at once.
+  const int facets = in.numberoffacets;
+  std::vector<int> current(facets);  // position -> facet of the original order
+  for (int f = 0; f < facets; ++f) current[f] = f;
+  auto use_order = [&](const std::vector<int>& target) {
+    std::vector<int> position_of(facets);
+    for (int p = 0; p < facets; ++p) position_of[current[p]] = p;
+    std::vector<int> order(facets);
+    for (int p = 0; p < facets; ++p) order[p] = position_of[target[p]];
+    reorder_facets(in, map, order);
+    current = target;
+  };
+  int first_code = 0;
+  std::string first_printed;
+  ConvertedMesh best;
+  bool have_best = false;
+  std::vector<int> best_order;
+  std::string best_printed;
+  for (int attempt = 0; attempt < options.attempts; ++attempt) {
+    if (attempt > 0) {
+      std::vector<int> target(facets);
+      for (int f = 0; f < facets; ++f) target[f] = f;
+      if (attempt == 1)
+        std::reverse(target.begin(), target.end());
+      else
+        std::shuffle(target.begin(), target.end(), std::mt19937(static_cast<unsigned>(attempt)));
+      use_order(target);
+    }
+    tetgenio out;
+    std::string printed;
+    const int code = tetgen(out, printed, "attempt " + std::to_string(attempt + 1));
+    ++info.attempts;
+    if (code != 0) {
+      log.debug("tetmesh: attempt " + std::to_string(attempt + 1) + " failed: code " + std::to_string(code) + " (" +
+                failure_reason(code) + ")");
+      if (attempt == 0) {
+        first_code = code;
+        first_printed = printed;
+      }
+      if (code != kTetgenCrashed && code != 2) break;  // about the input: no other order helps
+      continue;
+    }
+    ConvertedMesh converted = to_volume_mesh(model, map, in, plc_points, out);
+    if (!have_best || converted.split_facets < best.split_facets) {
+      best = std::move(converted);
+      have_best = true;
+      best_order = current;
+      best_printed = printed;
+    }
+    if (best.split_facets == 0 || !options.keep_surface) break;
+  }
+  if (!have_best) {
+    use_order(identity(facets));  // the order of the first failure, whose report is parsed
+    throw_failure(first_code, first_printed, model, map, in, log);
+  }
+  if (current != best_order) use_order(best_order);
+  info.tetgen_output = best_printed;
+
+  // Sliver passes (see sliver_points), when the surface is kept and a dihedral bound is asked.
+  const bool chase_slivers = options.keep_surface && options.radius_edge_ratio > 0.0 && options.min_dihedral_deg > 0.0;
+  std::unique_ptr<TriangleTree> surfaces;
+  std::vector<Vec3> extra;  // interior points added against slivers
+  double best_angle = min_dihedral(best.mesh);
+  for (int pass = 1; chase_slivers && pass <= options.sliver_passes && best_angle < options.min_dihedral_deg; ++pass) {
+    if (!surfaces) surfaces = std::make_unique<TriangleTree>(model.vertices, flatten(model).triangles);
+    double unfixable = 180.0;
+    const std::vector<Vec3> more = sliver_points(best.mesh, *surfaces, options.min_dihedral_deg, extra, unfixable);
+    if (more.empty() || unfixable <= best_angle) break;  // nothing to do, or the worst tet is out of reach
+    extra.insert(extra.end(), more.begin(), more.end());
+    info.sliver_passes = pass;
+    // The PLC points, then the sliver points as isolated vertices.
+    delete[] in.pointlist;
+    in.numberofpoints = plc_points + static_cast<int>(extra.size());
+    in.pointlist = new REAL[3 * in.numberofpoints];
+    std::copy(plc_coordinates.begin(), plc_coordinates.end(), in.pointlist);
+    for (size_t e = 0; e < extra.size(); ++e)
+      for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = extra[e][d];
+    tetgenio out;
+    std::string printed;
+    const int code = tetgen(out, printed, "sliver pass " + std::to_string(pass));
+    if (code != 0) {
+      log.debug("tetmesh: sliver pass " + std::to_string(pass) + " failed (code " + std::to_string(code) +
+                "); keeping the previous mesh");
+      break;
+    }
+    ConvertedMesh converted = to_volume_mesh(model, map, in, plc_points, out);
+    const double angle = min_dihedral(converted.mesh);
+    log.debug("tetmesh: sliver pass " + std::to_string(pass) + ": " + std::to_string(extra.size()) +
+              " points, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
+    if (angle > best_angle && converted.split_facets <= best.split_facets) {
+      best = std::move(converted);
+      best_angle = angle;
+      info.tetgen_output = printed;
+      info.sliver_points = static_cast<int>(extra.size());
+    }
+  }
+
+  VolumeMesh& mesh = best.mesh;
+  info.steiner_points = static_cast<int>(mesh.vertices.size()) - plc_points;
+  info.split_facets = best.split_facets;
+  if (info.attempts > 1)
+    log.info("tetmesh: TetGen needed " + std::to_string(info.attempts) + " attempts (facet orders) on model '" +
+             model.name + "'");
+  if (best.relabelled_tets > 0)
+    log.warning("tetmesh: " + std::to_string(best.relabelled_tets) + " tets TetGen left without a region attribute " +
+                "took the region of their neighbours (across faces that are not on a surface)");
+  if (info.split_facets > 0)
+    log.warning("tetmesh: " + std::to_string(info.split_facets) + " model triangles were split by TetGen" +
+                (options.keep_surface ? " despite Y (it could not recover them otherwise)" : ""));
+  log.debug("tetmesh: " + std::to_string(mesh.tets.size()) + " tets, " + std::to_string(mesh.vertices.size()) +
+            " vertices (" + std::to_string(info.steiner_points) + " Steiner points, " + std::to_string(info.sliver_points) +
+            " of them against slivers), " + std::to_string(mesh.triangles.size()) + " surface triangles, TetGen " +
+            number(info.tetgen_seconds) + " s");
+  return std::move(best.mesh);
+}
+
+}  // namespace voroseal

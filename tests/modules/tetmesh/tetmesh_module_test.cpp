@@ -1,0 +1,61 @@
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "framework/host/registry.h"
+#include "framework/model/model_builder.h"
+#include "tests/support/test_models.h"
+
+void voroseal_register_tetmesh(voroseal::ModuleRegistry& registry);
+
+namespace voroseal {
+namespace {
+
+TEST(TetmeshModule, SetsTheVolumeAndReport) {
+  ModuleRegistry registry;
+  voroseal_register_tetmesh(registry);
+  const Module& module = registry.get("tetmesh");
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  Context context(log, progress);
+  context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
+  module.run(context, Parameters(module.parameters(), {{"quality", "1.4"}}));
+  ASSERT_TRUE(context.volume);
+  const auto& report = context.report.at("tetmesh");
+  EXPECT_EQ(report.at("switches"), "pq1.4/10AYJQ");
+  EXPECT_EQ(report.at("tets").get<long>(), static_cast<long>(context.volume->tets.size()));
+  EXPECT_EQ(report.at("regions_meshed"), 2);
+  EXPECT_EQ(report.at("nonconforming_triangles"), 0);
+  EXPECT_EQ(report.at("nonpositive_tets"), 0);
+  EXPECT_LT(report.at("max_relative_volume_error").get<double>(), 1e-6);
+  EXPECT_GE(report.at("min_dihedral_deg").get<double>(), 5.0);
+  ASSERT_EQ(report.at("regions").size(), 2u);
+  EXPECT_NEAR(report.at("regions")[0].at("enclosed_volume").get<double>(), 0.5, 1e-12);
+  EXPECT_FALSE(report.contains("output"));
+}
+
+TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
+  ModuleRegistry registry;
+  voroseal_register_tetmesh(registry);
+  const Module& module = registry.get("tetmesh");
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  Context context(log, progress);
+  context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(2, true)));
+  const auto dir = std::filesystem::temp_directory_path() / ("voroseal_tetmesh_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "box.mesh").string();
+  module.run(context, Parameters(module.parameters(), {{"output", out}}));
+  EXPECT_TRUE(std::filesystem::exists(out));
+  EXPECT_GT(std::filesystem::file_size(out), 0u);
+  EXPECT_EQ(context.report.at("tetmesh").at("output"), out);
+  // The input of the run is protected.
+  context.input_path = out;
+  EXPECT_ANY_THROW(module.run(context, Parameters(module.parameters(), {{"output", out}})));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace voroseal

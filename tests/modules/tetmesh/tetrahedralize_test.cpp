@@ -1,0 +1,344 @@
+#include "modules/tetmesh/tetrahedralize.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "framework/core/error.h"
+#include "framework/model/model_builder.h"
+#include "io/model_io.h"
+#include "modules/tetmesh/tetgen_plc.h"
+#include "modules/tetmesh/tetgen_run.h"
+#include "modules/tetmesh/volume_quality.h"
+#include "tests/support/test_models.h"
+
+namespace voroseal {
+namespace {
+
+Logger quiet_logger() { return Logger(LogLevel::Quiet); }
+
+int part_named(const StructuralModel& m, const std::string& prefix) {
+  for (size_t p = 0; p < m.parts.size(); ++p)
+    if (m.parts[p].name.rfind(prefix, 0) == 0) return static_cast<int>(p);
+  return -1;
+}
+
+/// The properties every tet mesh of a model must have: one region id per model region, every
+/// model triangle a tet face, region volumes equal to the enclosed volumes, no flat tet.
+void expect_valid_mesh(const StructuralModel& model, const VolumeMesh& mesh, double volume_tolerance = 1e-6) {
+  const VolumeQuality q = measure_volume(mesh);
+  EXPECT_EQ(q.regions, static_cast<int>(model.regions.size()));
+  EXPECT_EQ(mesh.region_names.size(), model.regions.size());
+  EXPECT_EQ(mesh.surface_names.size(), model.parts.size());
+  EXPECT_EQ(q.nonpositive_tets, 0);
+  EXPECT_GT(q.min_volume, 0.0);
+  EXPECT_EQ(model_triangles_not_in_tets(model, mesh).size(), 0u);
+  EXPECT_EQ(q.nonconforming_triangles, 0);
+  EXPECT_EQ(static_cast<int>(mesh.triangles.size()), model.num_triangles());
+  ASSERT_EQ(q.region_volume.size(), model.regions.size());
+  for (size_t r = 0; r < model.regions.size(); ++r) {
+    const double enclosed = -model.signed_volume(model.regions[r].sides);
+    EXPECT_NEAR(q.region_volume[r], enclosed, volume_tolerance * enclosed) << "region " << model.regions[r].name;
+  }
+  for (int s : mesh.triangle_surface) {
+    EXPECT_GE(s, 0);
+    EXPECT_LT(s, static_cast<int>(model.parts.size()));
+  }
+}
+
+TEST(TetgenSwitches, AreTheDocumentedString) {
+  TetmeshOptions o;
+  EXPECT_EQ(tetgen_switches(o), "pq1.5/10AYJQ");
+  EXPECT_EQ(tetgen_switches(o, false), "pq1.5/10AYJ");
+  o.max_volume = 0.01;
+  o.min_dihedral_deg = 0;
+  EXPECT_EQ(tetgen_switches(o), "pq1.5a0.01AYJQ");
+  o.radius_edge_ratio = 0;
+  o.keep_surface = false;
+  EXPECT_EQ(tetgen_switches(o), "pa0.01AJQ");
+}
+
+TEST(Tetrahedralize, BoxCutByHorizonGivesTwoConformalRegions) {
+  const StructuralModel model = build_model(test::lattice_box(4, true));
+  Logger log = quiet_logger();
+  TetmeshRun run;
+  testing::internal::CaptureStdout();
+  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log, &run);
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(run.switches, "pq1.5/10AYJQ");
+  EXPECT_EQ(run.split_facets, 0);
+  EXPECT_EQ(run.input_facets, model.num_triangles());
+  expect_valid_mesh(model, mesh);
+  const VolumeQuality q = measure_volume(mesh);
+  for (double v : q.region_volume) EXPECT_NEAR(v, 0.5, 0.5e-6);
+  EXPECT_GE(q.min_dihedral_deg, 5.0);
+  EXPECT_LE(q.max_radius_edge, 3.0);  // q1.5 away from the kept surface, bounded near it
+  // Frame copied; the horizon's triangles carry its id and lie between the two regions.
+  EXPECT_EQ(mesh.frame.origin, model.frame.origin);
+  const int horizon = part_named(model, "horizon");
+  ASSERT_GE(horizon, 0);
+  EXPECT_EQ(mesh.surface_names[horizon], model.parts[horizon].name);
+  int horizon_triangles = 0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (mesh.triangle_surface[t] == horizon) {
+      ++horizon_triangles;
+      for (int v : mesh.triangles[t]) EXPECT_NEAR(mesh.vertices[v].z(), model.vertices[model.parts[horizon].model_vertex[0]].z(), 0);
+    }
+  EXPECT_EQ(horizon_triangles, static_cast<int>(model.parts[horizon].mesh.n_faces()));
+}
+
+TEST(Tetrahedralize, SurfaceTrianglesKeepTheModelOrientation) {
+  const StructuralModel model = build_model(test::lattice_box(2, false, Vec3(0, 0, 0), Vec3(1, 1, 1), 7));
+  Logger log = quiet_logger();
+  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log);
+  // Each output triangle is a model triangle with the same cyclic order (and part).
+  std::map<std::array<double, 3>, int> id_of;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v)
+    id_of[{mesh.vertices[v].x(), mesh.vertices[v].y(), mesh.vertices[v].z()}] = static_cast<int>(v);
+  std::map<std::array<int, 3>, std::pair<Triangle, int>> model_triangle;
+  const ModelTriangles flat = flatten(model);
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    Triangle ids;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = model.vertices[flat.triangles[t][k]];
+      ids[k] = id_of.at({p.x(), p.y(), p.z()});
+    }
+    std::array<int, 3> key = ids;
+    std::sort(key.begin(), key.end());
+    model_triangle[key] = {ids, flat.part[t]};
+  }
+  auto canonical = [](Triangle t) {  // rotate the smallest id first, keeping the cyclic order
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+    return t;
+  };
+  ASSERT_EQ(mesh.triangles.size(), flat.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    std::array<int, 3> key = mesh.triangles[t];
+    std::sort(key.begin(), key.end());
+    const auto it = model_triangle.find(key);
+    ASSERT_NE(it, model_triangle.end());
+    EXPECT_EQ(canonical(mesh.triangles[t]), canonical(it->second.first));
+    EXPECT_EQ(mesh.triangle_surface[t], it->second.second);
+  }
+}
+
+TEST(Tetrahedralize, FloatingFaultStaysAsInternalFacets) {
+  SurfaceSoup soup = test::lattice_box(4, false);
+  test::append(soup, test::floating_fault(3, 0.5, 0.2, 0.8));
+  const StructuralModel model = build_model(soup);
+  ASSERT_EQ(model.regions.size(), 1u);
+  const int fault = part_named(model, "fault");
+  ASSERT_GE(fault, 0);
+  Logger log = quiet_logger();
+  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log);
+  expect_valid_mesh(model, mesh);
+  EXPECT_NEAR(measure_volume(mesh).region_volume[0], 1.0, 1e-6);
+  int fault_triangles = 0;
+  for (int s : mesh.triangle_surface) fault_triangles += s == fault;
+  EXPECT_EQ(fault_triangles, 18);
+  // Tets on both sides of the fault: its triangles are interior faces shared by two tets.
+  std::set<std::array<int, 3>> faces_seen_once, faces_seen_twice;
+  for (const Tetrahedron& t : mesh.tets)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> f;
+      int k = 0;
+      for (int i = 0; i < 4; ++i)
+        if (i != skip) f[k++] = t[i];
+      std::sort(f.begin(), f.end());
+      if (!faces_seen_once.insert(f).second) faces_seen_twice.insert(f);
+    }
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (mesh.triangle_surface[t] != fault) continue;
+    std::array<int, 3> f = mesh.triangles[t];
+    std::sort(f.begin(), f.end());
+    EXPECT_TRUE(faces_seen_twice.count(f)) << "fault triangle " << t << " is not between two tets";
+  }
+}
+
+TEST(Tetrahedralize, MaxVolumeBoundsEveryTetWhenTheSurfaceMayBeSplit) {
+  const StructuralModel model = build_model(test::lattice_box(2, true));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.max_volume = 0.001;
+  options.keep_surface = false;
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  EXPECT_EQ(run.switches, "pq1.5/10a0.001AJQ");
+  double largest = 0;
+  for (const Tetrahedron& t : mesh.tets)
+    largest = std::max(largest, tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]));
+  EXPECT_LE(largest, 0.001 * (1 + 1e-9));
+  EXPECT_GE(mesh.tets.size(), 1000u);
+  // Surface triangles were split, but every output triangle still carries a valid surface id
+  // and the regions keep their volumes.
+  EXPECT_GT(run.split_facets, 0);
+  const VolumeQuality q = measure_volume(mesh);
+  EXPECT_EQ(q.regions, 2);
+  EXPECT_EQ(q.nonconforming_triangles, 0);
+  for (double v : q.region_volume) EXPECT_NEAR(v, 0.5, 0.5e-6);
+  for (int s : mesh.triangle_surface) EXPECT_LT(s, static_cast<int>(model.parts.size()));
+}
+
+TEST(Tetrahedralize, MaxVolumeRefinesInsideAKeptSurface) {
+  // With Y TetGen inserts no point that encroaches upon the kept surface, so the bound holds
+  // away from coarse surface triangles only: more tets than without it, the surface intact.
+  const StructuralModel model = build_model(test::lattice_box(8, true));
+  Logger log = quiet_logger();
+  const VolumeMesh unbounded = tetrahedralize(model, TetmeshOptions{}, log);
+  TetmeshOptions options;
+  options.max_volume = 1e-4;
+  const VolumeMesh bounded = tetrahedralize(model, options, log);
+  expect_valid_mesh(model, bounded);
+  EXPECT_GT(bounded.tets.size(), 3 * unbounded.tets.size());
+}
+
+/// A box holding two squares that cross each other along a vertical line.
+StructuralModel crossing_squares() {
+  SurfaceSoup soup = test::lattice_box(2, false);
+  SurfaceSoup a = test::floating_fault(3, 0.5, 0.2, 0.8);
+  a.groups[0].name = a.groups[0].interface = "square_a";
+  SurfaceSoup b = test::floating_fault(3, 0.5, 0.3, 0.7);
+  for (Vec3& p : b.points) std::swap(p.x(), p.y());  // the plane y = 0.5
+  b.groups[0].name = b.groups[0].interface = "square_b";
+  test::append(soup, a);
+  test::append(soup, b);
+  return build_model(soup);
+}
+
+TEST(Tetrahedralize, SelfIntersectionNamesBothSurfaces) {
+  const StructuralModel model = crossing_squares();
+  ASSERT_GE(part_named(model, "square_a"), 0);
+  ASSERT_GE(part_named(model, "square_b"), 0);
+  Logger log = quiet_logger();
+  testing::internal::CaptureStdout();
+  try {
+    tetrahedralize(model, TetmeshOptions{}, log);
+    ADD_FAILURE() << "TetGen accepted intersecting surfaces";
+  } catch (const MesherError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("square_a"), std::string::npos) << what;
+    EXPECT_NE(what.find("square_b"), std::string::npos) << what;
+    EXPECT_NE(what.find("intersect"), std::string::npos) << what;
+    EXPECT_EQ(what.find("zmin"), std::string::npos) << what;  // the box is not involved
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+}
+
+TEST(Tetrahedralize, TetgenOutputGoesToTheDebugLogNotStdout) {
+  const StructuralModel model = build_model(test::lattice_box(2, false));
+  std::FILE* sink = std::tmpfile();
+  ASSERT_NE(sink, nullptr);
+  Logger log(LogLevel::Debug, sink);
+  testing::internal::CaptureStdout();
+  TetmeshRun run;
+  tetrahedralize(model, TetmeshOptions{}, log, &run);
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_EQ(run.switches, "pq1.5/10AYJ");  // no Q at the debug level: TetGen's full log
+  EXPECT_NE(run.tetgen_output.find("Delaunay"), std::string::npos) << run.tetgen_output;
+  std::rewind(sink);
+  std::string logged;
+  char buffer[4096];
+  size_t got;
+  while ((got = std::fread(buffer, 1, sizeof buffer, sink)) > 0) logged.append(buffer, got);
+  std::fclose(sink);
+  EXPECT_NE(logged.find("debug: TetGen"), std::string::npos);
+  EXPECT_NE(logged.find("Delaunay"), std::string::npos);
+}
+
+/// The bundled models are clean (smallest triangle angle > 30°): the full bar holds, dihedral
+/// bound included.
+class BundledModel : public testing::TestWithParam<const char*> {};
+
+TEST_P(BundledModel, MeetsEveryBarWithTheDefaults) {
+  const StructuralModel model = read_model(test::bundled_model(GetParam()));
+  Logger log = quiet_logger();
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log, &run);
+  expect_valid_mesh(model, mesh);
+  EXPECT_EQ(run.split_facets, 0);
+  const VolumeQuality q = measure_volume(mesh);
+  EXPECT_GE(q.min_dihedral_deg, 5.0) << run.sliver_passes << " sliver passes, " << run.sliver_points << " points";
+  EXPECT_LE(q.max_radius_edge, 3.0);
+  std::fprintf(stderr, "[figures] %s: %ld tets, min dihedral %.2f deg, max radius-edge %.3f, %d sliver passes\n",
+               GetParam(), q.tets, q.min_dihedral_deg, q.max_radius_edge, run.sliver_passes);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, BundledModel, testing::Values("folded_layers.ts", "faulted_layers.ts"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           std::string name = info.param;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(Tetrahedralize, SliverPassesRaiseTheSmallestDihedralAngle) {
+  // folded_layers: TetGen alone leaves slivers on slight folds of the horizons (about 1°).
+  const StructuralModel model = read_model(test::bundled_model("folded_layers.ts"));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.sliver_passes = 0;
+  const double without = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
+  options.sliver_passes = 2;
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  EXPECT_GE(run.sliver_passes, 1);
+  EXPECT_GT(run.sliver_points, 0);
+  EXPECT_EQ(static_cast<int>(mesh.vertices.size()), run.input_points + run.steiner_points);
+  EXPECT_LT(without, 5.0);
+  EXPECT_GT(measure_volume(mesh).min_dihedral_deg, without);
+  expect_valid_mesh(model, mesh);
+}
+
+TEST(Tetrahedralize, OptionsOutOfRangeAreParameterErrors) {
+  const StructuralModel model = build_model(test::lattice_box(2, false));
+  Logger log = quiet_logger();
+  TetmeshOptions o;
+  o.radius_edge_ratio = 0.5;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.min_dihedral_deg = 80;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.max_volume = -1;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+}
+
+TEST(TetgenRun, ReturnsCodesAndFillsTheOutput) {
+  const StructuralModel model = build_model(test::lattice_box(2, false));
+  tetgenio in;
+  const PlcMap map = build_plc(model, in);
+  EXPECT_EQ(in.numberofpoints, static_cast<int>(model.vertices.size()));
+  EXPECT_EQ(in.numberoffacets, model.num_triangles());
+  EXPECT_EQ(in.numberofregions, 1);
+  std::string printed;
+  {
+    tetgenio out;
+    EXPECT_EQ(run_tetgen("prQ", in, out, printed), 10);  // refinement of a mesh: not supported here
+  }
+  tetgenio out;
+  testing::internal::CaptureStdout();
+  EXPECT_EQ(run_tetgen("pAYJ", in, out, printed), 0);
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  EXPECT_NE(printed.find("Boundary recovery seconds"), std::string::npos) << printed;
+  EXPECT_EQ(out.numberofpoints, in.numberofpoints);  // no Steiner point needed in a cube
+  EXPECT_GT(out.numberoftetrahedra, 0);
+  ASSERT_EQ(out.numberoftetrahedronattributes, 1);
+  for (int t = 0; t < out.numberoftetrahedra; ++t) EXPECT_EQ(out.tetrahedronattributelist[t], 1.0);
+  ASSERT_NE(out.trifacemarkerlist, nullptr);
+  EXPECT_EQ(out.numberoftrifaces, model.num_triangles());
+  for (int f = 0; f < out.numberoftrifaces; ++f) {
+    EXPECT_GE(out.trifacemarkerlist[f], 1);
+    EXPECT_LE(out.trifacemarkerlist[f], static_cast<int>(model.parts.size()));
+  }
+  static_cast<void>(map);
+}
+
+TEST(Tetrahedralize, ModelWithoutRegionsIsAModelError) {
+  const StructuralModel model = build_model(test::floating_fault(2, 0.0, 0.0, 1.0));
+  Logger log = quiet_logger();
+  EXPECT_THROW(tetrahedralize(model, TetmeshOptions{}, log), ModelError);
+}
+
+}  // namespace
+}  // namespace voroseal
