@@ -9,7 +9,7 @@ required=(
   libgtest-dev libbenchmark-dev
   libnanoflann-dev liblbfgspp-dev nlohmann-json3-dev libcli11-dev libtbb-dev
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  pybind11-dev python3-dev python3-numpy
+  pybind11-dev python3-dev python3-numpy zlib1g-dev
 )
 optional=(libceres-dev)
 

@@ -3,11 +3,15 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
 #include "framework/core/error.h"
+#include "framework/host/pipeline.h"
+#include "framework/host/plugin_loader.h"
 #include "framework/host/runner.h"
+#include "framework/host/study_report.h"
 
 namespace voroseal {
 
@@ -66,9 +70,44 @@ struct ModuleCommand {
   std::map<std::string, bool> flags;
 };
 
+// `voroseal run STUDY.json`: the study's runs, its summary table and report.
+int run_study_command(const ModuleRegistry& registry, const std::string& file, const std::string& output,
+                      bool dry_run, bool no_pictures, bool json, int threads, Logger& log, Progress& progress) {
+  try {
+    Study study = read_study(file);
+    if (!output.empty()) study.output = std::filesystem::absolute(output).lexically_normal().string();
+    if (no_pictures) study.pictures = false;
+    if (dry_run) {
+      const std::vector<StudyRun> runs = expand_study(study);
+      validate_study(registry, study, runs);
+      nlohmann::json list = nlohmann::json::array();
+      for (const StudyRun& r : runs)
+        list.push_back({{"run", r.index + 1}, {"model", r.model}, {"directory", r.directory}, {"swept", r.swept}});
+      if (json) {
+        std::cout << nlohmann::json{{"study", study.name}, {"output", study.output}, {"runs", list}}.dump(2) << "\n";
+      } else {
+        std::cout << "study " << study.name << ": " << runs.size() << " runs into " << study.output << "\n";
+        for (const StudyRun& r : runs)
+          std::cout << "  " << r.index + 1 << "  " << r.model_label << "/" << r.key << "\n";
+      }
+      return kExitOk;
+    }
+    StudyOptions options;
+    options.threads = threads;
+    const StudyOutcome outcome = run_study(registry, study, options, log, progress);
+    if (json) std::cout << summary_json(outcome).dump(2) << "\n";
+    return outcome.exit_code();
+  } catch (...) {
+    return exit_code_for_current_exception(log);
+  }
+}
+
 }  // namespace
 
-int run_command_line(const ModuleRegistry& registry, int argc, char** argv) {
+int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
+  // External modules first: they become subcommands like the built-in ones.
+  const PluginLoadReport plugins = load_plugins_from_environment(registry);
+
   CLI::App app{"voroseal: remesh 3D structural models (Pellerin et al. 2014) and tet-mesh them with TetGen.\n"
                "Every subcommand below is a module; `voroseal modules` lists their parameters."};
   app.require_subcommand(1);
@@ -78,10 +117,23 @@ int run_command_line(const ModuleRegistry& registry, int argc, char** argv) {
   app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
   app.add_flag("-q,--quiet", quiet, "no progress and no log on stderr, only results and errors");
   app.add_flag("-v,--verbose", verbose, "debug log on stderr");
+  bool json_output = false;
+  app.add_flag("--json", json_output, "print the result (module report, study summary) as JSON on stdout");
+  // Global options may also follow the subcommand: `voroseal stats m.ts --threads 2`.
+  app.fallthrough();
 
   bool modules_json = false;
   CLI::App* list = app.add_subcommand("modules", "list the modules and their parameters");
   list->add_flag("--json", modules_json, "as JSON");
+
+  std::string study_file, study_output;
+  bool dry_run = false, no_pictures = false;
+  CLI::App* study = app.add_subcommand("run", "run a study: a pipeline of modules over models with parameter "
+                                              "sweeps, a summary table and an HTML report (docs/studies.md)");
+  study->add_option("study", study_file, "study file (.json)")->required();
+  study->add_option("-o,--output", study_output, "output folder (default: the study's \"output\")");
+  study->add_flag("--no-pictures", no_pictures, "do not render a picture of each run");
+  study->add_flag("--dry-run", dry_run, "check the study and list its runs without running them");
 
   // Reading options shared by every module that reads a model.
   double feature_angle = 0.0, weld_tolerance = 1e-7;
@@ -129,14 +181,19 @@ int run_command_line(const ModuleRegistry& registry, int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUnreadable;
   }
 
+  Logger log(quiet ? LogLevel::Warning : verbose ? LogLevel::Debug : LogLevel::Info);
+  for (const std::string& error : plugins.errors) log.error(error + " (skipped)");
+  for (const std::string& library : plugins.loaded) log.debug("plugin " + library);
   if (list->parsed()) {
-    print_modules(registry, modules_json);
+    print_modules(registry, modules_json || json_output);
     return kExitOk;
   }
   if (threads > 0) omp_set_num_threads(threads);
 
-  Logger log(quiet ? LogLevel::Warning : verbose ? LogLevel::Debug : LogLevel::Info);
   Progress progress(!quiet && stderr_is_terminal());
+  if (study->parsed())
+    return run_study_command(registry, study_file, study_output, dry_run, no_pictures, json_output, threads, log,
+                             progress);
   Context context(log, progress);
   context.threads = threads;
   for (ModuleCommand& c : commands) {
@@ -154,7 +211,15 @@ int run_command_line(const ModuleRegistry& registry, int argc, char** argv) {
         run.parameters[spec.name] = c.values[spec.name];
       }
     }
-    return run_module_reporting(registry, run, context);
+    // A module that prints its own JSON (a bool parameter "json") is asked to; for the others
+    // the CLI prints the context report.
+    bool module_prints_json = false;
+    for (const ParameterSpec& spec : c.module->parameters())
+      module_prints_json = module_prints_json || (spec.name == "json" && spec.type == ParameterType::Bool);
+    if (json_output && module_prints_json) run.parameters["json"] = true;
+    const int code = run_module_reporting(registry, run, context);
+    if (json_output && !module_prints_json) std::cout << context.report.dump(2) << "\n";
+    return code;
   }
   return kExitUnreadable;
 }

@@ -6,7 +6,8 @@
 
 namespace voroseal {
 
-/// Parses argv, runs the chosen module and returns the process exit code.
-int run_command_line(const ModuleRegistry& registry, int argc, char** argv);
+/// Loads the plugins of $VOROSEAL_PLUGIN_PATH into the registry, parses argv, runs the chosen
+/// module (or `run STUDY.json`, `modules`) and returns the process exit code.
+int run_command_line(ModuleRegistry& registry, int argc, char** argv);
 
 }  // namespace voroseal

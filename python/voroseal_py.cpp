@@ -1,0 +1,569 @@
+// The voroseal Python module: the same C++ API as the command line. Load a model, look at its
+// surfaces, contacts, corners and regions as numpy arrays, run any registered module (check,
+// remesh, tetmesh, stats, plugins) on it, write it, run whole studies.
+//
+//   import voroseal
+//   m = voroseal.read_model("models/folded_layers.ts")
+//   m.vertices            # (n, 3) float64, file coordinates
+//   voroseal.run("stats", m)["min_angle_deg"]
+//   ctx = voroseal.Context(m); ctx.run("tetmesh", quality=1.5); ctx.volume.tets
+//
+// Parameter names are the CLI's with '_' for '-' (edge_length=200 is --edge-length 200).
+#include <omp.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "framework/core/error.h"
+#include "framework/host/pipeline.h"
+#include "framework/host/plugin_loader.h"
+#include "framework/host/registry.h"
+#include "framework/host/render.h"
+#include "framework/host/runner.h"
+#include "framework/host/study_report.h"
+#include "framework/model/model_builder.h"
+#include "io/model_io.h"
+
+namespace py = pybind11;
+using nlohmann::json;
+
+namespace voroseal {
+namespace {
+
+using Registry = std::shared_ptr<ModuleRegistry>;
+
+// ---- conversions -------------------------------------------------------------------------
+
+json to_json(const py::handle& value) {
+  if (value.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) return value.cast<long long>();
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::hasattr(value, "__fspath__")) return py::module_::import("os").attr("fspath")(value).cast<std::string>();
+  if (py::isinstance<py::dict>(value)) {
+    json object = json::object();
+    for (const auto& [k, v] : value.cast<py::dict>()) object[py::str(k).cast<std::string>()] = to_json(v);
+    return object;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    json array = json::array();
+    for (const py::handle& v : value) array.push_back(to_json(v));
+    return array;
+  }
+  if (py::hasattr(value, "item")) return to_json(value.attr("item")());  // numpy scalars
+  throw ParameterError("cannot pass a " + py::str(value.get_type()).cast<std::string>() + " as a parameter");
+}
+
+py::object to_python(const json& value) {
+  switch (value.type()) {
+    case json::value_t::null: return py::none();
+    case json::value_t::boolean: return py::bool_(value.get<bool>());
+    case json::value_t::number_integer: return py::int_(value.get<long long>());
+    case json::value_t::number_unsigned: return py::int_(value.get<unsigned long long>());
+    case json::value_t::number_float: return py::float_(value.get<double>());
+    case json::value_t::string: return py::str(value.get<std::string>());
+    case json::value_t::array: {
+      py::list list;
+      for (const json& v : value) list.append(to_python(v));
+      return std::move(list);
+    }
+    case json::value_t::object: {
+      py::dict dict;
+      for (const auto& [k, v] : value.items()) dict[py::str(k)] = to_python(v);
+      return std::move(dict);
+    }
+    default: return py::none();
+  }
+}
+
+// Keyword arguments to module parameters: edge_length -> edge-length.
+json parameters_from(const py::kwargs& kwargs) {
+  json parameters = json::object();
+  for (const auto& [k, v] : kwargs) {
+    std::string name = py::str(k).cast<std::string>();
+    for (char& c : name)
+      if (c == '_') c = '-';
+    parameters[name] = to_json(v);
+  }
+  return parameters;
+}
+
+py::array_t<double> points_array(const std::vector<Vec3>& points, const Vec3& origin) {
+  py::array_t<double> array({static_cast<py::ssize_t>(points.size()), static_cast<py::ssize_t>(3)});
+  auto a = array.mutable_unchecked<2>();
+  for (size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) a(i, k) = points[i][k] + origin[k];
+  return array;
+}
+
+template <size_t N>
+py::array_t<int64_t> index_array(const std::vector<std::array<int, N>>& items) {
+  py::array_t<int64_t> array({static_cast<py::ssize_t>(items.size()), static_cast<py::ssize_t>(N)});
+  auto a = array.mutable_unchecked<2>();
+  for (size_t i = 0; i < items.size(); ++i)
+    for (size_t k = 0; k < N; ++k) a(i, k) = items[i][k];
+  return array;
+}
+
+py::array_t<int64_t> int_array(const std::vector<int>& items) {
+  py::array_t<int64_t> array(static_cast<py::ssize_t>(items.size()));
+  auto a = array.mutable_unchecked<1>();
+  for (size_t i = 0; i < items.size(); ++i) a(i) = items[i];
+  return array;
+}
+
+ReadOptions read_options(double feature_angle, double weld_tolerance, const std::string& corner_rule) {
+  if (corner_rule != "incidence" && corner_rule != "signature")
+    throw ParameterError("corner_rule must be 'incidence' or 'signature'");
+  ReadOptions options;
+  options.build.feature_angle_deg = feature_angle;
+  options.build.weld_tolerance = weld_tolerance;
+  options.build.corner_rule = corner_rule == "signature" ? CornerRule::Signature : CornerRule::Incidence;
+  return options;
+}
+
+RenderOptions render_options(int width, int height, double azimuth, double elevation, bool perspective,
+                             bool cut_away, const std::string& colour_by, double vertical_exaggeration) {
+  RenderOptions o;
+  o.width = width;
+  o.height = height;
+  o.azimuth_deg = azimuth;
+  o.elevation_deg = elevation;
+  o.perspective = perspective;
+  o.cut_away = cut_away;
+  if (colour_by != "part" && colour_by != "interface") throw ParameterError("colour_by must be 'part' or 'interface'");
+  o.colour_by = colour_by == "interface" ? ColourBy::Interface : ColourBy::Part;
+  o.vertical_exaggeration = vertical_exaggeration;
+  return o;
+}
+
+// ---- a Context with its logger and progress ----------------------------------------------
+
+// What Python's Context holds: the C++ Context refers to a Logger and a Progress it does not own.
+struct Session {
+  Session(Registry r, bool verbose, bool progress_bar, int threads)
+      : registry(std::move(r)),
+        log(verbose ? LogLevel::Info : LogLevel::Warning),
+        progress(progress_bar && stderr_is_terminal()),
+        context(log, progress) {
+    context.threads = threads;
+  }
+  Registry registry;
+  Logger log;
+  Progress progress;
+  Context context;
+
+  // Runs a module; returns its report (report[module] when it wrote one, else the whole report).
+  py::object run(const std::string& module, const json& parameters) {
+    ModuleRun run;
+    run.module = module;
+    run.parameters = parameters;
+    if (context.threads > 0) omp_set_num_threads(context.threads);
+    {
+      py::gil_scoped_release release;
+      if (!context.model && registry->get(module).needs_model())
+        throw ModelError(module + " needs a model: pass one to Context(model) or run(module, model)");
+      run_module(*registry, run, context);
+    }
+    return to_python(context.report.contains(module) ? context.report[module] : context.report);
+  }
+};
+
+void set_model(Session& session, const std::shared_ptr<StructuralModel>& model) {
+  if (!model) {
+    session.context.model.reset();
+    session.context.input.reset();
+    return;
+  }
+  // The module works on a copy: the caller's Model is never changed behind its back.
+  session.context.input = model;
+  session.context.model = std::make_shared<StructuralModel>(*model);
+}
+
+}  // namespace
+}  // namespace voroseal
+
+PYBIND11_MODULE(voroseal, m) {
+  using namespace voroseal;
+  m.doc() = "voroseal: remeshing of 3D structural models (Pellerin et al. 2014) and TetGen volume meshing";
+
+  // Errors: one Python exception per C++ category, all under voroseal.Error.
+  static py::exception<std::runtime_error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<InputError> input_error(m, "InputError", error.ptr());
+  static py::exception<ModelError> model_error(m, "ModelError", error.ptr());
+  static py::exception<ParameterError> parameter_error(m, "ParameterError", error.ptr());
+  static py::exception<MesherError> mesher_error(m, "MesherError", error.ptr());
+  static py::exception<OutputError> output_error(m, "OutputError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      input_error(e.what());
+    } catch (const ModelError& e) {
+      model_error(e.what());
+    } catch (const ParameterError& e) {
+      parameter_error(e.what());
+    } catch (const MesherError& e) {
+      mesher_error(e.what());
+    } catch (const OutputError& e) {
+      output_error(e.what());
+    }
+  });
+
+  auto registry = std::make_shared<ModuleRegistry>();
+  register_builtin_modules(*registry);
+  {
+    const PluginLoadReport plugins = load_plugins_from_environment(*registry);
+    for (const std::string& e : plugins.errors)
+      PyErr_WarnEx(PyExc_RuntimeWarning, ("voroseal plugin skipped: " + e).c_str(), 1);
+  }
+
+  // ---- Model ----
+  py::class_<StructuralModel, std::shared_ptr<StructuralModel>> model(
+      m, "Model", "A structural model: surface parts, contacts, corners, regions. Arrays are copies.");
+  model.def_readwrite("name", &StructuralModel::name)
+      .def_property_readonly(
+          "origin", [](const StructuralModel& s) { return points_array({Vec3::Zero()}, s.frame.origin).attr("reshape")(3); },
+          "the local frame's origin: file coordinates = local + origin")
+      .def_property_readonly(
+          "vertices", [](const StructuralModel& s) { return points_array(s.vertices, s.frame.origin); },
+          "(n, 3) float64 vertex coordinates, as in the file")
+      .def_property_readonly(
+          "local_vertices", [](const StructuralModel& s) { return points_array(s.vertices, Vec3::Zero()); },
+          "(n, 3) float64 coordinates in the local frame (vertices - origin)")
+      .def_property_readonly(
+          "triangles", [](const StructuralModel& s) { return index_array<3>(flatten(s).triangles); },
+          "(m, 3) int64 vertex ids of every triangle, part by part")
+      .def_property_readonly(
+          "triangle_parts", [](const StructuralModel& s) { return int_array(flatten(s).part); },
+          "(m,) int64 surface part of each triangle")
+      .def_property_readonly("part_names",
+                             [](const StructuralModel& s) {
+                               std::vector<std::string> names;
+                               for (const SurfacePart& p : s.parts) names.push_back(p.name);
+                               return names;
+                             })
+      .def_property_readonly("part_interfaces",
+                             [](const StructuralModel& s) {
+                               std::vector<int> ids;
+                               for (const SurfacePart& p : s.parts) ids.push_back(p.interface);
+                               return int_array(ids);
+                             })
+      .def_property_readonly("interfaces",
+                             [](const StructuralModel& s) {
+                               py::list list;
+                               for (const Interface& i : s.interfaces)
+                                 list.append(py::dict(py::arg("name") = i.name, py::arg("kind") = to_string(i.kind),
+                                                      py::arg("feature") = i.feature,
+                                                      py::arg("parts") = int_array(i.parts)));
+                               return list;
+                             },
+                             "list of {name, kind, feature, parts}")
+      .def_property_readonly("contacts",
+                             [](const StructuralModel& s) {
+                               py::list list;
+                               for (const Contact& c : s.contacts) list.append(int_array(c.vertices));
+                               return list;
+                             },
+                             "list of int64 arrays: the vertex ids along each contact line")
+      .def_property_readonly("contact_parts",
+                             [](const StructuralModel& s) {
+                               std::vector<std::vector<int>> parts;
+                               for (const Contact& c : s.contacts) parts.push_back(c.parts);
+                               return parts;
+                             })
+      .def_property_readonly("contact_corners",
+                             [](const StructuralModel& s) {
+                               std::vector<std::array<int, 2>> ends;
+                               for (const Contact& c : s.contacts) ends.push_back(c.corners);
+                               return index_array<2>(ends);
+                             },
+                             "(k, 2) corner ids at the ends of each contact")
+      .def_property_readonly("corners",
+                             [](const StructuralModel& s) {
+                               std::vector<int> ids;
+                               for (const Corner& c : s.corners) ids.push_back(c.vertex);
+                               return int_array(ids);
+                             },
+                             "int64 vertex id of each corner")
+      .def_property_readonly("regions",
+                             [](const StructuralModel& s) {
+                               py::list list;
+                               for (const Region& r : s.regions) {
+                                 py::list sides;
+                                 for (const Side& side : r.sides) sides.append(py::make_tuple(side.part, side.positive));
+                                 list.append(sides);
+                               }
+                               return list;
+                             },
+                             "each region's sides: (part, positive) with positive the side the normal points to")
+      .def_property_readonly("region_names",
+                             [](const StructuralModel& s) {
+                               std::vector<std::string> names;
+                               for (const Region& r : s.regions) names.push_back(r.name);
+                               return names;
+                             })
+      .def_property_readonly("region_adjacency", &StructuralModel::region_adjacency,
+                             "sorted neighbour lists of the regions (the universe is not listed)")
+      .def_property_readonly("part_regions",
+                             [](const StructuralModel& s) {
+                               std::vector<std::array<int, 2>> pairs;
+                               for (const auto& [pos, neg] : s.part_regions()) pairs.push_back({pos, neg});
+                               return index_array<2>(pairs);
+                             },
+                             "(p, 2): region on the positive and negative side of each part (-1 universe)")
+      .def_property_readonly("layers",
+                             [](const StructuralModel& s) {
+                               py::list list;
+                               for (const Layer& l : s.layers)
+                                 list.append(py::dict(py::arg("name") = l.name, py::arg("regions") = l.regions));
+                               return list;
+                             })
+      .def_property_readonly("num_triangles", &StructuralModel::num_triangles)
+      .def_property_readonly("area", &StructuralModel::area)
+      .def("bbox",
+           [](const StructuralModel& s) {
+             const BoundingBox b = s.bbox();
+             return py::make_tuple(points_array({b.min}, s.frame.origin).attr("reshape")(3),
+                                   points_array({b.max}, s.frame.origin).attr("reshape")(3));
+           },
+           "(min, max) corners in file coordinates")
+      .def("copy", [](const StructuralModel& s) { return std::make_shared<StructuralModel>(s); })
+      .def(
+          "write",
+          [](const StructuralModel& s, const py::object& path) {
+            const std::string p = to_json(path).get<std::string>();
+            py::gil_scoped_release release;
+            write_model(s, p);
+          },
+          py::arg("path"), "writes the model; the format comes from the extension (.ml .ts .obj .mesh .vtu .msh)")
+      .def(
+          "render",
+          [](const StructuralModel& s, int width, int height, double azimuth, double elevation, bool perspective,
+             bool cut_away, const std::string& colour_by, double exaggeration) {
+            const RenderOptions o =
+                render_options(width, height, azimuth, elevation, perspective, cut_away, colour_by, exaggeration);
+            Image image;
+            {
+              py::gil_scoped_release release;
+              image = render_model(s, o);
+            }
+            py::array_t<uint8_t> array({image.height, image.width, 3});
+            std::copy(image.rgb.begin(), image.rgb.end(), array.mutable_data());
+            return array;
+          },
+          py::arg("width") = 800, py::arg("height") = 560, py::arg("azimuth") = 210.0, py::arg("elevation") = 28.0,
+          py::arg("perspective") = false, py::arg("cut_away") = true, py::arg("colour_by") = "part",
+          py::arg("vertical_exaggeration") = 1.0,
+          "a picture of the surfaces coloured by part, as an (height, width, 3) uint8 array")
+      .def(
+          "write_picture",
+          [](const StructuralModel& s, const py::object& path, int width, int height, double azimuth,
+             double elevation, bool perspective, bool cut_away, const std::string& colour_by, double exaggeration) {
+            const RenderOptions o =
+                render_options(width, height, azimuth, elevation, perspective, cut_away, colour_by, exaggeration);
+            const std::string p = to_json(path).get<std::string>();
+            py::gil_scoped_release release;
+            write_png(render_model(s, o), p);
+          },
+          py::arg("path"), py::arg("width") = 800, py::arg("height") = 560, py::arg("azimuth") = 210.0,
+          py::arg("elevation") = 28.0, py::arg("perspective") = false, py::arg("cut_away") = true,
+          py::arg("colour_by") = "part", py::arg("vertical_exaggeration") = 1.0, "writes render() as a PNG file")
+      .def("__repr__", [](const StructuralModel& s) {
+        return "<voroseal.Model '" + s.name + "': " + std::to_string(s.vertices.size()) + " vertices, " +
+               std::to_string(s.num_triangles()) + " triangles, " + std::to_string(s.parts.size()) + " surfaces, " +
+               std::to_string(s.contacts.size()) + " contacts, " + std::to_string(s.corners.size()) + " corners, " +
+               std::to_string(s.regions.size()) + " regions>";
+      });
+
+  // ---- VolumeMesh ----
+  py::class_<VolumeMesh, std::shared_ptr<VolumeMesh>>(m, "VolumeMesh",
+                                                      "A tetrahedral mesh with region ids (what tetmesh makes)")
+      .def_property_readonly("vertices", [](const VolumeMesh& v) { return points_array(v.vertices, v.frame.origin); },
+                             "(n, 3) float64, file coordinates")
+      .def_property_readonly("tets", [](const VolumeMesh& v) { return index_array<4>(v.tets); }, "(k, 4) int64")
+      .def_property_readonly("tet_regions", [](const VolumeMesh& v) { return int_array(v.tet_region); },
+                             "(k,) region id of each tet (index into region_names)")
+      .def_property_readonly("triangles", [](const VolumeMesh& v) { return index_array<3>(v.triangles); },
+                             "(t, 3) boundary and interface triangles")
+      .def_property_readonly("triangle_surfaces", [](const VolumeMesh& v) { return int_array(v.triangle_surface); })
+      .def_readonly("region_names", &VolumeMesh::region_names)
+      .def_readonly("surface_names", &VolumeMesh::surface_names)
+      .def(
+          "write",
+          [](const VolumeMesh& v, const py::object& path) {
+            const std::string p = to_json(path).get<std::string>();
+            py::gil_scoped_release release;
+            write_volume_mesh(v, p);
+          },
+          py::arg("path"), "writes the mesh (.mesh .vtu .msh, .node/.ele)")
+      .def("__repr__", [](const VolumeMesh& v) {
+        return "<voroseal.VolumeMesh: " + std::to_string(v.vertices.size()) + " vertices, " +
+               std::to_string(v.tets.size()) + " tets, " + std::to_string(v.region_names.size()) + " regions>";
+      });
+
+  // ---- reading and building ----
+  m.def(
+      "read_model",
+      [](const py::object& path, double feature_angle, double weld_tolerance, const std::string& corner_rule) {
+        const std::string p = to_json(path).get<std::string>();
+        const ReadOptions options = read_options(feature_angle, weld_tolerance, corner_rule);
+        py::gil_scoped_release release;
+        return std::make_shared<StructuralModel>(read_model(p, options));
+      },
+      py::arg("path"), py::arg("feature_angle") = 0.0, py::arg("weld_tolerance") = 1e-7,
+      py::arg("corner_rule") = "incidence", "reads a model file (.ml .ts .obj .mesh) and builds its structure");
+  m.def("write_model", [](const StructuralModel& s, const py::object& path) { write_model(s, to_json(path).get<std::string>()); },
+        py::arg("model"), py::arg("path"));
+  m.def(
+      "read_volume_mesh",
+      [](const py::object& path) { return std::make_shared<VolumeMesh>(read_volume_mesh(to_json(path).get<std::string>())); },
+      py::arg("path"));
+  m.def("write_volume_mesh",
+        [](const VolumeMesh& v, const py::object& path) { write_volume_mesh(v, to_json(path).get<std::string>()); },
+        py::arg("mesh"), py::arg("path"));
+  m.def(
+      "build_model",
+      [](py::array_t<double, py::array::c_style | py::array::forcecast> vertices,
+         py::array_t<int64_t, py::array::c_style | py::array::forcecast> triangles, py::object groups,
+         std::vector<std::string> group_names, double feature_angle, double weld_tolerance) {
+        if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw ParameterError("vertices must be an (n, 3) array");
+        if (triangles.ndim() != 2 || triangles.shape(1) != 3) throw ParameterError("triangles must be an (m, 3) array");
+        SurfaceSoup soup;
+        soup.source = "python";
+        auto v = vertices.unchecked<2>();
+        for (py::ssize_t i = 0; i < v.shape(0); ++i) soup.points.emplace_back(v(i, 0), v(i, 1), v(i, 2));
+        auto t = triangles.unchecked<2>();
+        std::vector<int64_t> group_of(t.shape(0), 0);
+        if (!groups.is_none()) {
+          auto g = groups.cast<py::array_t<int64_t, py::array::c_style | py::array::forcecast>>();
+          if (g.ndim() != 1 || g.shape(0) != t.shape(0))
+            throw ParameterError("groups must give one group per triangle");
+          std::copy(g.data(), g.data() + g.shape(0), group_of.begin());
+        }
+        int64_t groups_used = 0;
+        for (py::ssize_t i = 0; i < t.shape(0); ++i) {
+          Triangle tri;
+          for (int k = 0; k < 3; ++k) {
+            if (t(i, k) < 0 || t(i, k) >= v.shape(0))
+              throw ParameterError("triangle " + std::to_string(i) + " refers to a vertex that does not exist");
+            tri[k] = static_cast<int>(t(i, k));
+          }
+          if (group_of[i] < 0) throw ParameterError("negative group id");
+          soup.triangles.push_back(tri);
+          soup.triangle_group.push_back(static_cast<int>(group_of[i]));
+          groups_used = std::max(groups_used, group_of[i] + 1);
+        }
+        if (!group_names.empty() && static_cast<int64_t>(group_names.size()) < groups_used)
+          throw ParameterError("fewer group names than groups");
+        for (int64_t g = 0; g < std::max<int64_t>(groups_used, group_names.size()); ++g) {
+          const std::string name = g < static_cast<int64_t>(group_names.size()) ? group_names[g] : "group" + std::to_string(g);
+          soup.groups.push_back({name, name, SurfaceKind::Unknown, ""});
+        }
+        BuildOptions options;
+        options.feature_angle_deg = feature_angle;
+        options.weld_tolerance = weld_tolerance;
+        py::gil_scoped_release release;
+        return std::make_shared<StructuralModel>(build_model(soup, options));
+      },
+      py::arg("vertices"), py::arg("triangles"), py::arg("groups") = py::none(),
+      py::arg("group_names") = std::vector<std::string>{}, py::arg("feature_angle") = 0.0,
+      py::arg("weld_tolerance") = 1e-7,
+      "builds a model from triangles: groups (one id per triangle) name the surfaces; contacts, corners and "
+      "regions are inferred");
+
+  // ---- modules ----
+  m.def(
+      "modules",
+      [registry]() {
+        py::list list;
+        for (const Module* module : registry->modules()) {
+          py::list parameters;
+          for (const ParameterSpec& p : module->parameters())
+            parameters.append(py::dict(py::arg("name") = p.name, py::arg("type") = to_string(p.type),
+                                       py::arg("default") = to_python(p.default_value), py::arg("doc") = p.doc,
+                                       py::arg("choices") = p.choices, py::arg("required") = p.required));
+          list.append(py::dict(py::arg("name") = module->name(), py::arg("description") = module->description(),
+                               py::arg("needs_model") = module->needs_model(), py::arg("parameters") = parameters));
+        }
+        return list;
+      },
+      "the registered modules (built-in and plugins) with their parameters");
+  m.def(
+      "load_plugins",
+      [registry](const std::string& path) {
+        const PluginLoadReport r = load_plugins(*registry, path);
+        return py::dict(py::arg("loaded") = r.loaded, py::arg("modules") = r.modules, py::arg("errors") = r.errors);
+      },
+      py::arg("path"), "loads the plugin libraries (*.so) of a ':'-separated list of directories or files");
+
+  py::class_<Session, std::shared_ptr<Session>>(
+      m, "Context",
+      "The state a chain of modules shares: the current model (remesh replaces it), the volume mesh (tetmesh sets "
+      "it) and the reports. The model given is copied: it is never changed.")
+      .def(py::init([registry](std::shared_ptr<StructuralModel> model, int threads, bool verbose, bool progress) {
+             auto session = std::make_shared<Session>(registry, verbose, progress, threads);
+             set_model(*session, model);
+             return session;
+           }),
+           py::arg("model") = nullptr, py::arg("threads") = 0, py::arg("verbose") = false, py::arg("progress") = false)
+      .def(
+          "run", [](Session& s, const std::string& module, const py::kwargs& kwargs) {
+            return s.run(module, parameters_from(kwargs));
+          },
+          py::arg("module"), "runs a module with keyword parameters; returns its report as a dict")
+      .def_property(
+          "model", [](const Session& s) { return s.context.model; },
+          [](Session& s, std::shared_ptr<StructuralModel> m) { set_model(s, m); },
+          "the current model (a copy of what was set; modules may replace it)")
+      .def_property_readonly("input", [](const Session& s) { return std::const_pointer_cast<StructuralModel>(s.context.input); })
+      .def_property_readonly("volume", [](const Session& s) { return s.context.volume; })
+      .def_property_readonly("report", [](const Session& s) { return to_python(s.context.report); })
+      .def_property_readonly("exit_code", [](const Session& s) { return s.context.exit_code; },
+                             "non-zero when a step gave a negative verdict (check: the model is invalid)");
+
+  m.def(
+      "run",
+      [registry](const std::string& module, std::shared_ptr<StructuralModel> model, int threads, bool verbose,
+                 const py::kwargs& kwargs) {
+        Session session(registry, verbose, false, threads);
+        set_model(session, model);
+        return session.run(module, parameters_from(kwargs));
+      },
+      py::arg("module"), py::arg("model") = nullptr, py::kw_only(), py::arg("threads") = 0, py::arg("verbose") = false,
+      "runs one module on a copy of the model; returns the module's report as a dict. Use Context to keep the "
+      "model a module makes (remesh) or the volume mesh (tetmesh).");
+
+  m.def(
+      "run_study",
+      [registry](const py::object& study, const py::object& output, int threads, bool verbose, bool pictures) {
+        Study parsed;
+        if (py::isinstance<py::dict>(study))
+          parsed = parse_study(to_json(study), std::filesystem::current_path().string());
+        else
+          parsed = read_study(to_json(study).get<std::string>());
+        if (!output.is_none())
+          parsed.output = std::filesystem::absolute(to_json(output).get<std::string>()).lexically_normal().string();
+        if (!pictures) parsed.pictures = false;
+        if (threads > 0) omp_set_num_threads(threads);
+        Logger log(verbose ? LogLevel::Info : LogLevel::Warning);
+        Progress progress(false);
+        StudyOptions options;
+        options.threads = threads;
+        StudyOutcome outcome;
+        {
+          py::gil_scoped_release release;
+          outcome = run_study(*registry, parsed, options, log, progress);
+        }
+        return to_python(summary_json(outcome));
+      },
+      py::arg("study"), py::arg("output") = py::none(), py::arg("threads") = 0, py::arg("verbose") = false,
+      py::arg("pictures") = true,
+      "runs a study (a dict or a study file, see docs/studies.md); returns the summary (summary.json) as a dict");
+
+  m.attr("__version__") = "0.1.0";
+}
