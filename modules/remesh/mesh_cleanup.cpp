@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include "framework/geometry/self_intersections.h"
@@ -415,6 +416,151 @@ void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char
   }
 }
 
+// ---- fidelity: split where the remesh strays from the input by more than a tolerance ----
+
+// Arc-length parametrisation of the input contacts, to find the input vertices of a contact
+// between two output vertices.
+class ContactArcs {
+ public:
+  explicit ContactArcs(const StructuralModel& m) : m_(m), arc_(m.contacts.size()) {
+    for (size_t c = 0; c < m.contacts.size(); ++c) {
+      const auto& line = m.contacts[c].vertices;
+      arc_[c].assign(line.size(), 0.0);
+      for (size_t i = 1; i < line.size(); ++i)
+        arc_[c][i] = arc_[c][i - 1] + (m.vertices[line[i]] - m.vertices[line[i - 1]]).norm();
+    }
+  }
+  /// Arc length of the point of contact c nearest to x.
+  double position(int c, const Vec3& x) const {
+    const auto& line = m_.contacts[c].vertices;
+    double best = std::numeric_limits<double>::infinity(), at = 0.0;
+    for (size_t i = 0; i + 1 < line.size(); ++i) {
+      const Vec3& a = m_.vertices[line[i]];
+      const Vec3 d = m_.vertices[line[i + 1]] - a;
+      const double l2 = d.squaredNorm();
+      const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+      const double dist = (a + t * d - x).squaredNorm();
+      if (dist < best) {
+        best = dist;
+        at = arc_[c][i] + t * (arc_[c][i + 1] - arc_[c][i]);
+      }
+    }
+    return at;
+  }
+  /// The input vertex of contact c strictly between arc positions s0 and s1 (along the shorter
+  /// way for a closed contact) farthest from segment [a, b]; -1 when there is none.
+  int farthest_between(int c, double s0, double s1, const Vec3& a, const Vec3& b, double* distance) const {
+    const auto& line = m_.contacts[c].vertices;
+    const auto& arc = arc_[c];
+    const double total = arc.back();
+    const bool closed = m_.contacts[c].is_closed();
+    double lo = std::min(s0, s1), hi = std::max(s0, s1);
+    const bool wrap = closed && hi - lo > 0.5 * total;
+    int best = -1;
+    *distance = 0.0;
+    const Vec3 d = b - a;
+    const double l2 = d.squaredNorm();
+    for (size_t i = 0; i < line.size(); ++i) {
+      const double s = arc[i];
+      const bool inside = wrap ? (s < lo || s > hi) : (s > lo && s < hi);
+      if (!inside) continue;
+      const Vec3& x = m_.vertices[line[i]];
+      const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+      const double dist = (a + t * d - x).norm();
+      if (dist > *distance) {
+        *distance = dist;
+        best = line[i];
+      }
+    }
+    return best;
+  }
+
+ private:
+  const StructuralModel& m_;
+  std::vector<std::vector<double>> arc_;
+};
+
+// The contact both u and v sample (a contact vertex's contact, or the one a corner ends that the
+// other vertex lies on), -1 when none.
+int shared_contact(const Editor& e, int u, int v) {
+  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact) return fu.id == fv.id ? fu.id : -1;
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner)
+    return e.corner_ends_contact(fv.id, fu.id) ? fu.id : -1;
+  if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner)
+    return e.corner_ends_contact(fu.id, fv.id) ? fv.id : -1;
+  if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) {
+    for (int c : e.input_.corners[fu.id].contacts)
+      if (e.corner_ends_contact(fv.id, c)) return c;
+  }
+  return -1;
+}
+
+// Splits edge (u, v) at x in every triangle that has it, keeping orientations.
+void split_edge(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feature) {
+  std::vector<int> tris;
+  e.edge_triangles(u, v, tris);
+  const int w = static_cast<int>(e.s_.vertices.size());
+  e.s_.vertices.push_back(x);
+  e.s_.features.push_back(feature);
+  e.around_.emplace_back();
+  for (int t : tris) {
+    const Triangle f = e.s_.triangles[t];
+    const int part = e.s_.triangle_part[t];
+    int k = 0;
+    while (!((f[k] == u && f[(k + 1) % 3] == v) || (f[k] == v && f[(k + 1) % 3] == u))) ++k;
+    const int a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
+    e.kill(t);
+    e.add_triangle({a, w, c}, part);
+    e.add_triangle({w, b, c}, part);
+  }
+  for (int z : {u, v}) e.tidy(z);
+}
+
+// Splits the longest edge of triangle t at its middle, moved onto the input part (an edge inside
+// a part) or contact (an edge along a contact). Returns false when it cannot be placed.
+bool split_longest_edge(Editor& e, const SurfaceProjector& projector, int t) {
+  const Triangle f = e.s_.triangles[t];
+  int best = 0;
+  for (int i = 1; i < 3; ++i)
+    if ((e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm() > (e.p(f[best]) - e.p(f[(best + 1) % 3])).squaredNorm())
+      best = i;
+  const int u = f[best], v = f[(best + 1) % 3];
+  const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
+  if (!e.is_line_edge(u, v)) {
+    const int part = e.s_.triangle_part[t];
+    split_edge(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part});
+    return true;
+  }
+  const int c = shared_contact(e, u, v);
+  if (c < 0) return false;
+  split_edge(e, u, v, projector.on_contact(c, middle), {VertexFeature::Contact, c});
+  return true;
+}
+
+// Two triangles of different parts on the same three vertices: a pocket of zero volume where
+// two surfaces collapsed onto each other. Removing both keeps every edge's parity.
+int remove_coincident_triangles(Editor& e) {
+  std::map<std::array<int, 3>, int> first;
+  int removed = 0;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+    if (e.dead_[t]) continue;
+    std::array<int, 3> key = e.s_.triangles[t];
+    std::sort(key.begin(), key.end());
+    auto [it, inserted] = first.emplace(key, static_cast<int>(t));
+    if (inserted) continue;
+    if (e.dead_[it->second]) {
+      it->second = static_cast<int>(t);
+      continue;
+    }
+    e.kill(it->second);
+    e.kill(static_cast<int>(t));
+    removed += 2;
+  }
+  for (size_t v = 0; v < e.s_.vertices.size(); ++v) e.tidy(static_cast<int>(v));
+  return removed;
+}
+
 // Pairs of alive triangles that intersect (exact predicates), as editor triangle indices.
 std::vector<std::pair<int, int>> intersecting_pairs(const Editor& e) {
   std::vector<int> alive;
@@ -438,6 +584,7 @@ std::vector<std::pair<int, int>> intersecting_pairs(const Editor& e) {
 // collapsed where the features allow it.
 void resolve_intersections(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options,
                            CleanupReport& report) {
+  report.coincident_removed += remove_coincident_triangles(e);
   std::vector<std::pair<int, int>> pairs = intersecting_pairs(e);
   report.intersections_found = static_cast<int>(pairs.size());
   std::vector<int> nb;
@@ -461,17 +608,71 @@ void resolve_intersections(Editor& e, const SurfaceProjector& projector, const C
         std::array<std::pair<double, int>, 3> edges;
         for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
         std::sort(edges.begin(), edges.end());
+        bool collapsed = false;
         for (const auto& [len, i] : edges) {
           const int u = f[i], v = f[(i + 1) % 3];
           if (try_collapse(e, u, v) || try_collapse(e, v, u)) {
             ++report.needles_collapsed;
+            collapsed = true;
             break;
           }
         }
+        // A triangle that no move or collapse frees (its vertices are corners, say) gets a new
+        // vertex on its longest edge, on the part or contact that edge lies on.
+        if (!collapsed && round % 2 == 1) split_longest_edge(e, projector, t);
       }
     pairs = intersecting_pairs(e);
   }
   report.intersections_left = static_cast<int>(pairs.size());
+}
+
+// Splits contact edges whose chord leaves the input contact by more than `tolerance` (at the
+// farthest input vertex, kept in place), and surface edges of triangles whose middle lies
+// farther than `tolerance` from their input part (at the edge middle, projected).
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const ContactArcs& arcs, double tolerance) {
+  if (tolerance <= 0.0) return 0;
+  int splits = 0;
+  const size_t n = e.s_.triangles.size();
+  std::vector<int> tris;
+  for (size_t t = 0; t < n; ++t) {
+    if (e.dead_[t]) continue;
+    const Triangle f = e.s_.triangles[t];
+    bool done = false;
+    for (int i = 0; i < 3 && !done; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      if (!e.is_line_edge(u, v)) continue;
+      const int c = shared_contact(e, u, v);
+      if (c < 0) continue;
+      double distance = 0.0;
+      const int x = arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)), e.p(u), e.p(v), &distance);
+      if (x < 0 || distance <= tolerance) continue;
+      split_edge(e, u, v, e.input_.vertices[x], {VertexFeature::Contact, c, true});
+      ++splits;
+      done = true;
+    }
+    if (done) continue;
+    const int part = e.s_.triangle_part[t];
+    const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
+    if ((projector.on_part(part, centroid) - centroid).norm() <= tolerance) continue;
+    // Split the longest edge inside the part, at its middle moved onto the part.
+    int best = -1;
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      e.edge_triangles(u, v, tris);
+      if (tris.size() != 2 || e.s_.triangle_part[tris[0]] != e.s_.triangle_part[tris[1]]) continue;
+      const double len = (e.p(u) - e.p(v)).squaredNorm();
+      if (len > longest) {
+        longest = len;
+        best = i;
+      }
+    }
+    if (best < 0) continue;
+    const int u = f[best], v = f[(best + 1) % 3];
+    split_edge(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part});
+    ++splits;
+  }
+  return splits;
 }
 
 }  // namespace
@@ -493,6 +694,17 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
   report.flips += flip_edges(e, options.flip_flatness_deg);
   smooth(e, projector);
+  if (options.fidelity_tolerance > 0.0) {
+    const ContactArcs arcs(input);
+    for (int round = 0; round < 3; ++round) {
+      const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance);
+      report.fidelity_splits += splits;
+      if (splits == 0) break;
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+      smooth(e, projector);
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+    }
+  }
   if (options.resolve_intersections) resolve_intersections(e, projector, options, report);
   e.finish();
   return report;

@@ -21,6 +21,10 @@ struct CleanupOptions {
   /// (or a contact and a corner) is collapsed, merging the features there: the thin strip of a
   /// small fault throw closes, a fault tip joins the fault next to it. 0 disables it.
   double min_feature = 0.0;
+  /// Contact edges whose chord strays farther than this from their input contact, and triangles
+  /// whose middle strays farther than this from their input part, are split (the farthest input
+  /// contact vertex is kept). 0 disables it.
+  double fidelity_tolerance = 0.0;
 };
 
 struct CleanupReport {
@@ -28,8 +32,10 @@ struct CleanupReport {
   int needles_collapsed = 0;
   int flips = 0;
   int smoothing_passes = 0;
+  int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed
   int intersections_found = 0;  // intersecting triangle pairs before they were resolved
   int intersections_left = 0;   // pairs that could not be resolved
+  int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature
 };
 

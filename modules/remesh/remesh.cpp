@@ -150,6 +150,7 @@ RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, 
   if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
   CleanupOptions cleanup = options.cleanup;
   if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h;
+  if (cleanup.fidelity_tolerance < 0.0) cleanup.fidelity_tolerance = -cleanup.fidelity_tolerance * h;
   result.min_feature = cleanup.min_feature;
   result.build = build_remeshed_surface(input, geometry, rvd, projector, build);
   result.build_seconds = seconds_since(t0);

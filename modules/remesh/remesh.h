@@ -19,11 +19,17 @@
 
 namespace voroseal {
 
+/// Defaults of the command line, relative to the mean edge length h of the remesh: features
+/// closer than 0.2 h are merged (thinner strips only give slivers), and the remesh is refined
+/// where it strays farther than 0.1 h from the input.
+constexpr double kDefaultMinFeatureFactor = 0.2;
+constexpr double kDefaultFidelityFactor = 0.1;
+
 struct RemeshOptions {
   SeedOptions seeds;
   MeshBuildOptions build;
-  /// cleanup.min_feature < 0 means d_min = -cleanup.min_feature x the mean edge length of the
-  /// remesh (features much thinner than the triangles only give slivers).
+  /// A negative cleanup.min_feature or cleanup.fidelity_tolerance is a factor of the mean edge
+  /// length of the remesh: -0.2 means 0.2 h.
   CleanupOptions cleanup;
   bool clean_up = true;
 };

@@ -1,0 +1,238 @@
+// The `remesh` module: optimises seeds on the model (paper §3.1). Mesh building (§3.2) comes
+// next in this module; for now the result is the optimised seeds (--dump-seeds) and the report.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <system_error>
+
+#include "framework/core/error.h"
+#include "framework/host/module.h"
+#include "framework/host/registry.h"
+#include "io/model_io.h"
+#include "modules/remesh/remesh.h"
+
+namespace voroseal {
+
+namespace {
+
+/// Writes "x y z" per seed in file coordinates (local + frame origin), via a temporary file.
+void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::string& path,
+                const std::string& input_path) {
+  std::error_code ec;
+  if (!input_path.empty() && std::filesystem::exists(path, ec) &&
+      std::filesystem::equivalent(path, input_path, ec))
+    throw OutputError("remesh: refusing to write the seeds over the input file " + path);
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw OutputError("remesh: cannot write " + path);
+    char line[128];
+    for (const Vec3& p : seeds) {
+      const Vec3 x = p + frame.origin;
+      std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
+      out << line;
+    }
+    out.close();
+    if (!out) {
+      std::filesystem::remove(tmp, ec);
+      throw OutputError("remesh: cannot write " + path);
+    }
+  }
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw OutputError("remesh: cannot write " + path + ": " + ec.message());
+  }
+}
+
+class RemeshModule final : public Module {
+ public:
+  std::string name() const override { return "remesh"; }
+  std::string description() const override {
+    return "Remesh the surfaces at a target resolution (CVT seed optimisation, Pellerin et al. 2014)";
+  }
+  std::vector<ParameterSpec> parameters() const override {
+    // Field by field: robust to new ParameterSpec members.
+    auto spec = [](const char* name, ParameterType type, nlohmann::json def, const char* doc, double min = -1e300,
+                   double max = 1e300) {
+      ParameterSpec p;
+      p.name = name;
+      p.type = type;
+      p.default_value = std::move(def);
+      p.doc = doc;
+      p.min = min;
+      p.max = max;
+      return p;
+    };
+    std::vector<ParameterSpec> p;
+    p.push_back(spec("edge-length", ParameterType::Double, nullptr,
+                     "target edge length in model units (gives the number of seeds)", 0.0));
+    p.push_back(spec("seeds", ParameterType::Int, nullptr, "number of seeds (overrides --edge-length)", 1, 2147483647.0));
+    p.push_back(spec("iterations", ParameterType::Int, 100, "maximum optimisation iterations", 0, 1e6));
+    ParameterSpec optimizer = spec("optimizer", ParameterType::Choice, "lbfgs",
+                                   "seed optimiser: lbfgs, lloyd, or ceres (when built with Ceres)");
+    optimizer.choices = {"lbfgs", "lloyd", "ceres"};
+    p.push_back(optimizer);
+    p.push_back(spec("seed", ParameterType::Int, 1, "random seed of the initial sampling", 0, 9.2e18));
+    p.push_back(spec("gradient-threshold", ParameterType::Double, 1e-6,
+                     "stop when |grad F| falls below this fraction of its initial value", 0.0));
+    p.push_back(spec("boundary-weight", ParameterType::Double, nullptr,
+                     "weight alpha in [0, 1] of the contact energy (default: from the gradient-norm ratio)", 0.0, 1.0));
+    p.push_back(spec("dump-seeds", ParameterType::Path, nullptr, "write the optimised seeds, x y z per line"));
+    ParameterSpec output = spec("output", ParameterType::Path, nullptr, "write the remeshed model (format from the extension)");
+    output.short_name = "o";
+    p.push_back(output);
+    p.push_back(spec("min-feature", ParameterType::Double, nullptr,
+                     "merge features closer than this distance, d_min of paper Fig. 11c-d "
+                     "(default: 0.2 x the mean edge length; 0: never merge)",
+                     0.0));
+    p.push_back(spec("fidelity", ParameterType::Double, nullptr,
+                     "split where the remesh strays farther than this from the input "
+                     "(default: 0.1 x the mean edge length; 0: off)",
+                     0.0));
+    p.push_back(spec("no-cleanup", ParameterType::Bool, false, "skip the clean-up (valence-3, needles, flips, smoothing)"));
+    p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
+                     "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
+    return p;
+  }
+
+  void run(Context& context, const Parameters& parameters) const override {
+    if (!context.model) throw ModelError("remesh: no model");
+    SeedOptions options;
+    if (parameters.has("seeds")) {
+      options.num_seeds = static_cast<int>(parameters.get_int("seeds"));
+    } else if (parameters.has("edge-length")) {
+      options.edge_length = parameters.get_double("edge-length");
+      if (!(options.edge_length > 0.0)) throw ParameterError("parameter --edge-length: must be positive");
+    } else {
+      throw ParameterError("remesh: give --edge-length or --seeds");
+    }
+    options.optimizer.max_iterations = static_cast<int>(parameters.get_int("iterations"));
+    options.optimizer.kind = optimizer_from_string(parameters.get_string("optimizer"));
+    options.optimizer.gradient_threshold = parameters.get_double("gradient-threshold");
+    options.random_seed = static_cast<std::uint64_t>(parameters.get_int("seed"));
+    if (parameters.has("boundary-weight")) options.boundary_weight = parameters.get_double("boundary-weight");
+    options.threads = context.threads;
+
+    RemeshOptions remesh_options;
+    remesh_options.seeds = options;
+    remesh_options.cleanup.min_feature =
+        parameters.has("min-feature") ? parameters.get_double("min-feature") : -kDefaultMinFeatureFactor;
+    remesh_options.cleanup.fidelity_tolerance =
+        parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
+    remesh_options.clean_up = !parameters.get_bool("no-cleanup");
+    RemeshResult result = remesh(*context.model, remesh_options, context.log, context.progress);
+    const SeedOptimizationResult& r = result.seeds;
+
+    if (parameters.has("dump-seeds")) {
+      const std::string path = parameters.get_string("dump-seeds");
+      dump_seeds(r.seeds, context.model->frame, path, context.input_path);
+      context.log.info("remesh: wrote " + std::to_string(r.seeds.size()) + " seeds to " + path);
+    }
+
+    nlohmann::json history = nlohmann::json::array();
+    for (const IterationRecord& it : r.run.history)
+      history.push_back({{"iteration", it.iteration},
+                         {"energy", it.energy},
+                         {"cvt", std::isnan(it.cvt) ? nlohmann::json() : nlohmann::json(it.cvt)},
+                         {"boundary", std::isnan(it.boundary) ? nlohmann::json() : nlohmann::json(it.boundary)},
+                         {"gradient_norm", it.gradient_norm},
+                         {"evaluations", it.evaluations},
+                         {"seconds", it.seconds}});
+    nlohmann::json& report = context.report["remesh"];
+    report["seeds"] = r.seeds.size();
+    report["optimizer"] = to_string(options.optimizer.kind);
+    report["alpha"] = r.alpha;
+    report["iterations"] = r.run.history.empty() ? 0 : r.run.history.back().iteration;
+    report["evaluations"] = r.run.evaluations;
+    report["stop_reason"] = r.run.stop_reason;
+    report["history"] = std::move(history);
+    report["timings"] = {{"sampling_s", r.sampling_seconds},
+                         {"optimization_s", r.optimization_seconds},
+                         {"rvd_s", result.rvd_seconds},
+                         {"mesh_building_s", result.build_seconds},
+                         {"cleanup_s", result.cleanup_seconds},
+                         {"evaluation_ms_mean", r.run.evaluations > 0
+                                                    ? 1000.0 * r.optimization_seconds / r.run.evaluations
+                                                    : 0.0}};
+    report["mesh_building"] = {{"cell_components", result.build.cell_components},
+                               {"contact_components", result.build.contact_components},
+                               {"junction_triangles", result.build.junction_triangles},
+                               {"split_polygons", result.build.split_polygons},
+                               {"degenerate_dropped", result.build.degenerate_dropped},
+                               {"inconsistencies", result.build.inconsistencies}};
+    report["cleanup"] = {{"valence3_removed", result.cleanup.valence3_removed},
+                         {"needles_collapsed", result.cleanup.needles_collapsed},
+                         {"flips", result.cleanup.flips},
+                         {"fidelity_splits", result.cleanup.fidelity_splits},
+                         {"coincident_removed", result.cleanup.coincident_removed},
+                         {"intersections_found", result.cleanup.intersections_found},
+                         {"intersections_left", result.cleanup.intersections_left}};
+    report["min_feature"] = result.min_feature;
+    report["contact_slivers_removed"] = result.build.contact_slivers_removed;
+    report["sharp_points"] = result.build.sharp_points;
+    if (result.cleanup.intersections_left > 0)
+      context.log.warning("remesh: " + std::to_string(result.cleanup.intersections_left) +
+                          " pairs of triangles still intersect (run `voroseal check` on the output)");
+    report["topology"] = topology_json(result.topology, *context.model);
+    print_topology(context.log, result.topology);
+
+    context.model = std::make_shared<StructuralModel>(std::move(result.model));
+    if (parameters.has("output")) {
+      const std::string out = parameters.get_string("output");
+      write_model(*context.model, out, WriteOptions{{context.input_path}});
+      context.log.info("remesh: wrote " + out);
+    }
+    if (parameters.has("tetmesh")) {
+      if (context.registry == nullptr) throw ParameterError("remesh --tetmesh: no module registry in this run");
+      const Module& tetmesh = context.registry->get("tetmesh");
+      tetmesh.run(context, Parameters(tetmesh.parameters(), {{"output", parameters.get_string("tetmesh")}}));
+    }
+  }
+
+ private:
+  static nlohmann::json features_json(const std::vector<VertexFeature>& features) {
+    nlohmann::json list = nlohmann::json::array();
+    static const char* kinds[] = {"surface", "contact", "corner"};
+    for (const VertexFeature& f : features) list.push_back({{"kind", kinds[f.kind]}, {"id", f.id}});
+    return list;
+  }
+  static nlohmann::json topology_json(const TopologyReport& t, const StructuralModel& input) {
+    auto counts = [](const FeatureCounts& c) {
+      return nlohmann::json{{"surfaces", c.surfaces}, {"contacts", c.contacts}, {"corners", c.corners}, {"regions", c.regions}};
+    };
+    nlohmann::json merges = nlohmann::json::array();
+    for (const FeatureMerge& m : t.merges) {
+      const Vec3 x = m.location + input.frame.origin;
+      merges.push_back({{"reason", to_string(m.reason)},
+                        {"seed", m.seed},
+                        {"location", {x.x(), x.y(), x.z()}},
+                        {"features", features_json(m.features)}});
+    }
+    return {{"before", counts(t.input)},
+            {"after", counts(t.output)},
+            {"regions_preserved", t.regions_preserved},
+            {"merges", merges}};
+  }
+  static void print_topology(const Logger& log, const TopologyReport& t) {
+    char line[256];
+    std::snprintf(line, sizeof line, "remesh: surfaces %d -> %d, contacts %d -> %d, corners %d -> %d, regions %d -> %d%s",
+                  t.input.surfaces, t.output.surfaces, t.input.contacts, t.output.contacts, t.input.corners,
+                  t.output.corners, t.input.regions, t.output.regions,
+                  t.regions_preserved ? " (regions and their adjacency preserved)" : " (REGIONS CHANGED)");
+    log.info(line);
+    if (!t.merges.empty())
+      log.info("remesh: " + std::to_string(t.merges.size()) +
+               " features merged where the resolution is coarser than them (see the JSON report)");
+  }
+};
+
+}  // namespace
+
+}  // namespace voroseal
+
+void voroseal_register_remesh(voroseal::ModuleRegistry& registry) {
+  registry.add(std::make_unique<voroseal::RemeshModule>());
+}
