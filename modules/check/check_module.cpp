@@ -1,0 +1,67 @@
+// `voroseal check MODEL`: is the model sealed and valid for gridding? Prints a report (or one
+// JSON object with --json) on stdout; the run's exit code is 1 when the model is invalid.
+#include <algorithm>
+#include <cstdio>
+
+#include "framework/host/module.h"
+#include "framework/host/registry.h"
+#include "modules/check/model_validity.h"
+
+namespace voroseal {
+
+namespace {
+
+class CheckModule : public Module {
+ public:
+  std::string name() const override { return "check"; }
+  std::string description() const override {
+    return "sealing and validity report (exit code 1 when the model is invalid)";
+  }
+  std::vector<ParameterSpec> parameters() const override {
+    const CheckOptions defaults;
+    ParameterSpec json{"json", ParameterType::Bool, false, "print one JSON object instead of the text report"};
+    ParameterSpec short_edge{"short-edge", ParameterType::Double, defaults.short_edge_relative,
+                             "edges shorter than this times the bbox diagonal are errors"};
+    short_edge.min = 0;
+    ParameterSpec area{"degenerate-area", ParameterType::Double, defaults.degenerate_area_relative,
+                       "triangles with less area than this times diagonal^2 are near-degenerate (warnings)"};
+    area.min = 0;
+    ParameterSpec angle{"min-angle", ParameterType::Double, defaults.min_angle_warning_deg,
+                        "triangles with an angle below this (degrees) are warnings"};
+    angle.min = 0;
+    angle.max = 60;
+    // A flag that defaults to false: command-line flags can only be switched on.
+    ParameterSpec intersections{"no-intersections", ParameterType::Bool, false,
+                                "skip the self-intersection test (the most expensive check)"};
+    ParameterSpec examples{"examples", ParameterType::Int, defaults.max_examples, "examples listed per failed check"};
+    examples.min = 0;
+    return {json, short_edge, area, angle, intersections, examples};
+  }
+
+  void run(Context& context, const Parameters& parameters) const override {
+    CheckOptions options;
+    options.short_edge_relative = parameters.get_double("short-edge");
+    options.degenerate_area_relative = parameters.get_double("degenerate-area");
+    options.min_angle_warning_deg = parameters.get_double("min-angle");
+    options.intersections = !parameters.get_bool("no-intersections");
+    options.max_examples = static_cast<int>(parameters.get_int("examples"));
+    ValidityReport report = check_model(*context.model, options);
+    if (report.model.empty()) report.model = context.input_path;
+    const nlohmann::json json = to_json(report);
+    context.report["check"] = json;
+    if (parameters.get_bool("json"))
+      std::printf("%s\n", json.dump(2).c_str());
+    else
+      std::fputs(to_text(report).c_str(), stdout);
+    std::fflush(stdout);
+    if (!report.valid()) context.exit_code = std::max(context.exit_code, 1);
+  }
+};
+
+}  // namespace
+
+}  // namespace voroseal
+
+void voroseal_register_check(voroseal::ModuleRegistry& registry) {
+  registry.add(std::make_unique<voroseal::CheckModule>());
+}
