@@ -194,7 +194,10 @@ bool feature_allows_collapse(const Editor& e, int u, int v, double merge_below =
   return false;
 }
 
-bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0) {
+// Collapses u into v when the features, the link condition and the geometry allow it. No
+// triangle may come out with a smallest angle below min(its angle before, `floor_deg`): a
+// collapse never turns good triangles into needles (which would let collapses cascade).
+bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0) {
   if (!feature_allows_collapse(e, u, v, merge_below)) return false;
   std::vector<int> edge, nu, nv;
   e.edge_triangles(u, v, edge);
@@ -221,7 +224,8 @@ bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0) {
       if (w == u) w = v;
     const Vec3 after = normal_of(e.p(f[0]), e.p(f[1]), e.p(f[2]));
     if (after.dot(before) <= 0.5 * before.norm() * after.norm()) return false;
-    if (min_angle_deg(e.p(f[0]), e.p(f[1]), e.p(f[2])) < 1.0) return false;
+    const double after_angle = min_angle_deg(e.p(f[0]), e.p(f[1]), e.p(f[2]));
+    if (after_angle < 1.0 || after_angle < std::min(e.min_angle(t), floor_deg)) return false;
     const int x = f[0] == v ? f[1] : f[0], y = f[0] == v || f[1] == v ? f[2] : f[1];
     e.edge_triangles(v, x, existing);
     for (int g : existing)
@@ -517,27 +521,6 @@ void split_edge(Editor& e, int u, int v, const Vec3& x, const VertexFeature& fea
   for (int z : {u, v}) e.tidy(z);
 }
 
-// Splits the longest edge of triangle t at its middle, moved onto the input part (an edge inside
-// a part) or contact (an edge along a contact). Returns false when it cannot be placed.
-bool split_longest_edge(Editor& e, const SurfaceProjector& projector, int t) {
-  const Triangle f = e.s_.triangles[t];
-  int best = 0;
-  for (int i = 1; i < 3; ++i)
-    if ((e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm() > (e.p(f[best]) - e.p(f[(best + 1) % 3])).squaredNorm())
-      best = i;
-  const int u = f[best], v = f[(best + 1) % 3];
-  const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
-  if (!e.is_line_edge(u, v)) {
-    const int part = e.s_.triangle_part[t];
-    split_edge(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part});
-    return true;
-  }
-  const int c = shared_contact(e, u, v);
-  if (c < 0) return false;
-  split_edge(e, u, v, projector.on_contact(c, middle), {VertexFeature::Contact, c});
-  return true;
-}
-
 // Two triangles of different parts on the same three vertices: a pocket of zero volume where
 // two surfaces collapsed onto each other. Removing both keeps every edge's parity.
 int remove_coincident_triangles(Editor& e) {
@@ -578,10 +561,11 @@ std::vector<std::pair<int, int>> intersecting_pairs(const Editor& e) {
   return pairs;
 }
 
-// Removes intersections (paper §3.3: "resolved by vertex displacements or edge flipping"):
-// the vertices of intersecting triangles and their neighbours are smoothed again (which pulls a
-// fold back onto its surface), then the shortest edges of the triangles still intersecting are
-// collapsed where the features allow it.
+// Removes intersections (paper §3.3: "resolved by vertex displacements or edge flipping"): the
+// vertices of intersecting triangles and their neighbours are smoothed again, which pulls a
+// fold back onto its surface, the edges around are flipped, and needles among the intersecting
+// triangles are collapsed. Refining the triangles does not help: the pairs left cross because
+// of how they are connected, not because their chords are too long.
 void resolve_intersections(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options,
                            CleanupReport& report) {
   report.coincident_removed += remove_coincident_triangles(e);
@@ -599,27 +583,20 @@ void resolve_intersections(Editor& e, const SurfaceProjector& projector, const C
         }
     for (int k = 0; k < 3; ++k) smooth(e, projector, &involved);
     report.flips += flip_edges(e, options.flip_flatness_deg);
-    pairs = intersecting_pairs(e);
-    if (pairs.empty() || round == 0) continue;
     for (const auto& [a, b] : pairs)
       for (int t : {a, b}) {
-        if (e.dead_[t]) continue;
+        if (e.dead_[t] || e.min_angle(t) >= options.needle_angle_deg) continue;
         const Triangle f = e.s_.triangles[t];
         std::array<std::pair<double, int>, 3> edges;
         for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
         std::sort(edges.begin(), edges.end());
-        bool collapsed = false;
         for (const auto& [len, i] : edges) {
           const int u = f[i], v = f[(i + 1) % 3];
           if (try_collapse(e, u, v) || try_collapse(e, v, u)) {
             ++report.needles_collapsed;
-            collapsed = true;
             break;
           }
         }
-        // A triangle that no move or collapse frees (its vertices are corners, say) gets a new
-        // vertex on its longest edge, on the part or contact that edge lies on.
-        if (!collapsed && round % 2 == 1) split_longest_edge(e, projector, t);
       }
     pairs = intersecting_pairs(e);
   }
