@@ -56,15 +56,6 @@ void set_volume_vertices(VolumeMesh& mesh, const std::vector<Vec3>& file_points)
   for (const Vec3& p : file_points) mesh.vertices.push_back(p - mesh.frame.origin);
 }
 
-double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-  const double hmax = std::max({la, lb, lc});
-  const double p = 0.5 * (la + lb + lc);
-  const double s = 0.5 * (b - a).cross(c - a).norm();
-  if (hmax <= 0.0 || p <= 0.0) return 0.0;
-  return 6.0 * s / (std::sqrt(3.0) * hmax * p);
-}
-
 double tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const double v = (b - a).dot((c - a).cross(d - a)) / 6.0;
   const double sum = (b - a).squaredNorm() + (c - a).squaredNorm() + (d - a).squaredNorm() + (c - b).squaredNorm() +

@@ -34,8 +34,6 @@ Vec3 local_origin(const std::vector<Vec3>& points);
 /// Moves file coordinates into a local frame: sets mesh.frame and mesh.vertices.
 void set_volume_vertices(VolumeMesh& mesh, const std::vector<Vec3>& file_points);
 
-/// Q = 6S / (sqrt(3) h_max p), 1 for an equilateral triangle, 0 when degenerate.
-double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c);
 /// 6 sqrt(2) V / l_rms^3 with V the signed volume: 1 for a regular tetrahedron, negative when
 /// inverted, 0 when flat.
 double tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);

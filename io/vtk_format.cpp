@@ -1,5 +1,7 @@
 #include "io/vtk_format.h"
 
+#include "framework/geometry/triangle_quality.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -446,7 +448,7 @@ void write_vtu(const StructuralModel& model, std::ostream& out, int precision) {
   std::vector<double> quality;
   quality.reserve(t.triangles.size());
   for (const Triangle& f : t.triangles)
-    quality.push_back(triangle_quality(model.vertices[f[0]], model.vertices[f[1]], model.vertices[f[2]]));
+    quality.push_back(measure_triangle(model.vertices[f[0]], model.vertices[f[1]], model.vertices[f[2]]).q);
   write_reals(out, "quality", quality);
   out << "      </CellData>\n";
   write_footer(out);
@@ -463,7 +465,7 @@ void write_vtu_volume(const VolumeMesh& mesh, std::ostream& out, int precision) 
     surface.push_back(f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0);
     region.push_back(-1);
     const Triangle& t = mesh.triangles[f];
-    quality.push_back(triangle_quality(v[t[0]], v[t[1]], v[t[2]]));
+    quality.push_back(measure_triangle(v[t[0]], v[t[1]], v[t[2]]).q);
   }
   for (size_t k = 0; k < mesh.tets.size(); ++k) {
     surface.push_back(-1);

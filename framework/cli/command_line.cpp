@@ -68,6 +68,7 @@ struct ModuleCommand {
   std::string input;
   std::map<std::string, std::string> values;  // given on the command line
   std::map<std::string, bool> flags;
+  std::map<std::string, CLI::Option*> bool_options;
 };
 
 // `voroseal run STUDY.json`: the study's runs, its summary table and report.
@@ -163,7 +164,8 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
       const std::string d = default_text(spec);
       if (!d.empty()) doc += " (default " + d + ")";
       if (spec.type == ParameterType::Bool) {
-        c.app->add_flag("--" + spec.name, c.flags[spec.name], doc);
+        // --name switches it on, --no-name off (for parameters that default to true).
+        c.bool_options[spec.name] = c.app->add_flag("--" + spec.name + ",!--no-" + spec.name, c.flags[spec.name], doc);
         continue;
       }
       std::string names = spec.positional ? spec.name : "--" + spec.name;
@@ -206,7 +208,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
     run.read.build.corner_rule = corner_rule == "signature" ? CornerRule::Signature : CornerRule::Incidence;
     for (const ParameterSpec& spec : c.module->parameters()) {
       if (spec.type == ParameterType::Bool) {
-        if (c.flags[spec.name]) run.parameters[spec.name] = true;
+        if (c.bool_options[spec.name]->count() > 0) run.parameters[spec.name] = c.flags[spec.name];
       } else if (c.app->count(spec.positional ? spec.name : "--" + spec.name) > 0) {
         run.parameters[spec.name] = c.values[spec.name];
       }

@@ -183,7 +183,8 @@ class ModelBuilder {
     for (size_t f = 0; f < t_.triangles.size(); ++f)
       for (int i = 0; i < 3; ++i) {
         const uint64_t k = key_of(t_.triangles[f][i], group_[f]);
-        if (!multi_surface_group_[group_[f]] && colocated_keys_.count(k)) copies.emplace_back(k, soup_.triangles[input_triangle_[f]][i]);
+        if (!multi_surface_group_[group_[f]] && colocated_keys_.count(k))
+          copies.emplace_back(k, soup_.triangles[input_triangle_[f]][i]);
       }
     std::sort(copies.begin(), copies.end());
     copies.erase(std::unique(copies.begin(), copies.end()), copies.end());

@@ -30,9 +30,9 @@ class CheckModule : public Module {
                         "triangles with an angle below this (degrees) are warnings"};
     angle.min = 0;
     angle.max = 60;
-    // A flag that defaults to false: command-line flags can only be switched on.
-    ParameterSpec intersections{"no-intersections", ParameterType::Bool, false,
-                                "skip the self-intersection test (the most expensive check)"};
+    ParameterSpec intersections{"intersections", ParameterType::Bool, true,
+                                "test triangle pairs for intersections, the most expensive check "
+                                "(--no-intersections skips it)"};
     ParameterSpec examples{"examples", ParameterType::Int, defaults.max_examples, "examples listed per failed check"};
     examples.min = 0;
     return {json, short_edge, area, angle, intersections, examples};
@@ -43,7 +43,7 @@ class CheckModule : public Module {
     options.short_edge_relative = parameters.get_double("short-edge");
     options.degenerate_area_relative = parameters.get_double("degenerate-area");
     options.min_angle_warning_deg = parameters.get_double("min-angle");
-    options.intersections = !parameters.get_bool("no-intersections");
+    options.intersections = parameters.get_bool("intersections");
     options.max_examples = static_cast<int>(parameters.get_int("examples"));
     ValidityReport report = check_model(*context.model, options);
     if (report.model.empty()) report.model = context.input_path;

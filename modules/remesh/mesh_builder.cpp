@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "framework/core/union_find.h"
+#include "framework/geometry/triangle_quality.h"
 
 namespace voroseal {
 
@@ -444,10 +445,7 @@ class MeshBuilder {
     if (clean.size() == 4) {
       // A quad: the diagonal that gives the larger smallest angle.
       auto angle = [&](int a, int b, int c) {
-        const Vec3 &pa = points_[a].x, &pb = points_[b].x, &pc = points_[c].x;
-        const Vec3 u = pb - pa, v = pc - pa, w = pc - pb;
-        const double area2 = u.cross(v).norm();
-        return std::min({std::atan2(area2, u.dot(v)), std::atan2(area2, -u.dot(w)), std::atan2(area2, v.dot(w))});
+        return measure_triangle(points_[a].x, points_[b].x, points_[c].x).min_angle_deg;
       };
       const double d02 = std::min(angle(clean[0], clean[1], clean[2]), angle(clean[0], clean[2], clean[3]));
       const double d13 = std::min(angle(clean[1], clean[2], clean[3]), angle(clean[1], clean[3], clean[0]));

@@ -6,24 +6,14 @@
 #include <unordered_set>
 
 #include "framework/geometry/self_intersections.h"
+#include "framework/geometry/triangle_quality.h"
 #include "framework/model/triangle_topology.h"
 
 namespace voroseal {
 
-double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-  if (la == 0 || lb == 0 || lc == 0) return 0.0;
-  // Smallest angle is opposite the shortest edge; atan2 form is accurate for slivers.
-  const double area2 = (b - a).cross(c - a).norm();
-  double best = 180.0;
-  const double dot_a = (b - a).dot(c - a), dot_b = (c - b).dot(a - b), dot_c = (a - c).dot(b - c);
-  best = std::min(best, std::atan2(area2, dot_a));
-  best = std::min(best, std::atan2(area2, dot_b));
-  best = std::min(best, std::atan2(area2, dot_c));
-  return best * 180.0 / M_PI;
-}
-
 namespace {
+
+double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return measure_triangle(a, b, c).min_angle_deg; }
 
 Vec3 normal_of(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
 

@@ -46,7 +46,4 @@ struct CleanupReport {
 CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
                        const CleanupOptions& options = {});
 
-/// Smallest angle of triangle (a, b, c) in degrees (0 for a degenerate one).
-double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
-
 }  // namespace voroseal

@@ -59,7 +59,7 @@ TEST(CheckModule, ParametersReachTheChecks) {
       EXPECT_GT(c["count"].get<int>(), 0);
       EXPECT_EQ(c["examples"].size(), 2u);
     }
-  const CheckRun fast = run_check(test::lattice_box(2, false), {{"no-intersections", true}, {"json", true}});
+  const CheckRun fast = run_check(test::lattice_box(2, false), {{"intersections", false}, {"json", true}});
   for (const auto& c : fast.report["checks"])
     if (c["name"] == "self_intersections") {
       EXPECT_EQ(c["details"]["tested"], false);

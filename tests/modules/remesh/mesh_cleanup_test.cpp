@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "framework/geometry/triangle_quality.h"
 #include "framework/model/model_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
 #include "modules/remesh/surface_projection.h"
@@ -28,7 +29,7 @@ RemeshedSurface as_remeshed(const StructuralModel& m) {
 
 double mean_min_angle(const RemeshedSurface& s) {
   double sum = 0;
-  for (const Triangle& t : s.triangles) sum += min_angle_deg(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+  for (const Triangle& t : s.triangles) sum += measure_triangle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]).min_angle_deg;
   return sum / s.triangles.size();
 }
 

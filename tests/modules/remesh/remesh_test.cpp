@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "framework/geometry/triangle_quality.h"
 #include "framework/model/model_builder.h"
 #include "modules/remesh/remesh.h"
 #include "tests/support/test_models.h"
@@ -34,17 +35,8 @@ EdgeCounts count_edges(const StructuralModel& m) {
 }
 
 double mean_quality(const StructuralModel& m) {
-  double sum = 0;
-  int n = 0;
-  for (const Triangle& t : flatten(m).triangles) {
-    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
-    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-    const double s = 0.5 * (b - a).cross(c - a).norm();
-    const double p = 0.5 * (la + lb + lc);
-    sum += 6.0 * s / (std::sqrt(3.0) * std::max({la, lb, lc}) * p);
-    ++n;
-  }
-  return sum / n;
+  const ModelTriangles t = flatten(m);
+  return summarize_quality(m.vertices, t.triangles).avg_q;
 }
 
 TEST(Remesh, BoxWithHorizonKeepsEverything) {
