@@ -3,6 +3,10 @@
 // object with --json; the same object goes to context.report["stats"].
 #include <cstdio>
 
+#include <filesystem>
+
+#include "framework/core/error.h"
+#include "framework/geometry/volume_quality.h"
 #include "framework/host/module.h"
 #include "framework/host/registry.h"
 #include "io/model_io.h"
@@ -12,11 +16,66 @@ namespace voroseal {
 
 namespace {
 
+// The tetrahedral mesh in `path`, or null when the file holds none (or is not a volume format).
+std::shared_ptr<const VolumeMesh> volume_in(const std::string& path) {
+  if (path.empty()) return nullptr;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".mesh" && ext != ".vtu" && ext != ".msh" && ext != ".node" && ext != ".ele") return nullptr;
+  try {
+    auto mesh = std::make_shared<VolumeMesh>(read_volume_mesh(path));
+    return mesh->tets.empty() ? nullptr : mesh;
+  } catch (const InputError&) {
+    return nullptr;  // a surface-only file: the model statistics say it all
+  }
+}
+
+nlohmann::json volume_json(const VolumeMesh& mesh, const VolumeQuality& q) {
+  nlohmann::json regions = nlohmann::json::array();
+  for (size_t r = 0; r < q.region_volume.size(); ++r) {
+    if (q.region_tets[r] == 0) continue;
+    regions.push_back({{"id", r},
+                       {"name", r < mesh.region_names.size() ? mesh.region_names[r] : std::to_string(r)},
+                       {"tets", q.region_tets[r]},
+                       {"volume", q.region_volume[r]}});
+  }
+  return {{"vertices", q.vertices},
+          {"tets", q.tets},
+          {"regions", q.regions},
+          {"min_dihedral_deg", q.min_dihedral_deg},
+          {"max_dihedral_deg", q.max_dihedral_deg},
+          {"max_radius_edge", q.max_radius_edge},
+          {"mean_radius_edge", q.mean_radius_edge},
+          {"nonpositive_tets", q.nonpositive_tets},
+          {"total_volume", q.total_volume},
+          {"triangles_not_in_tets", q.nonconforming_triangles},
+          {"region_volumes", regions}};
+}
+
+std::string volume_table(const VolumeMesh& mesh, const VolumeQuality& q) {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; radius-edge max %.3g "
+                "mean %.3g; %ld flat or inverted tets; %ld surface triangles not on a tet\n",
+                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg, q.max_radius_edge,
+                q.mean_radius_edge, q.nonpositive_tets, q.nonconforming_triangles);
+  out += line;
+  for (size_t r = 0; r < q.region_volume.size(); ++r) {
+    if (q.region_tets[r] == 0) continue;
+    const std::string name = r < mesh.region_names.size() ? mesh.region_names[r] : std::to_string(r);
+    std::snprintf(line, sizeof line, "  region %-24s %9ld tets  volume %.6g\n", name.c_str(), q.region_tets[r],
+                  q.region_volume[r]);
+    out += line;
+  }
+  return out;
+}
+
 class StatsModule : public Module {
  public:
   std::string name() const override { return "stats"; }
   std::string description() const override {
-    return "quality table (Table 2 of the seed paper), Hausdorff distance with --ref";
+    return "quality table (Table 2 of the seed paper), Hausdorff distance with --ref, tet quality of volume meshes";
   }
   std::vector<ParameterSpec> parameters() const override {
     ParameterSpec ref{"ref", ParameterType::Path, nullptr, "reference model: adds the two-sided Hausdorff distance"};
@@ -46,17 +105,20 @@ class StatsModule : public Module {
     }
     nlohmann::json json =
         to_json(statistics, with_ref ? &fidelity : nullptr, with_ref ? &reference_statistics : nullptr);
-    // Hook for volume statistics: when a previous step (tetmesh) left a volume mesh in
-    // context.volume, its figures belong here under json["volume"] (measure_volume() of
-    // modules/tetmesh/volume_quality.h); wired by the pipeline owner to keep stats independent of
-    // the tetmesh module.
+    // A volume mesh: the one a previous step (tetmesh) made, or the input file when it holds
+    // tetrahedra (a .mesh, .vtu, .msh or TetGen file written by tetmesh).
+    std::shared_ptr<const VolumeMesh> volume = context.volume;
+    if (!volume) volume = volume_in(context.input_path);
+    if (volume) json["volume"] = volume_json(*volume, measure_volume(*volume));
     context.report["stats"] = json;
-    if (parameters.get_bool("json"))
+    if (parameters.get_bool("json")) {
       std::printf("%s\n", json.dump(2).c_str());
-    else
+    } else {
       std::fputs(
           to_table(statistics, with_ref ? &fidelity : nullptr, with_ref ? &reference_statistics : nullptr).c_str(),
           stdout);
+      if (volume) std::fputs(volume_table(*volume, measure_volume(*volume)).c_str(), stdout);
+    }
     std::fflush(stdout);
   }
 };

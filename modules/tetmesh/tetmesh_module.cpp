@@ -9,7 +9,7 @@
 #include "framework/host/registry.h"
 #include "io/model_io.h"
 #include "modules/tetmesh/tetrahedralize.h"
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
 

@@ -18,7 +18,7 @@
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "modules/tetmesh/triangle_tree.h"
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
 

@@ -113,6 +113,57 @@ TEST(StatsModule, TableJsonAndReference) {
   EXPECT_EQ(table.find("Hausdorff"), std::string::npos);
 }
 
+// A unit cube cut into the six Kuhn tetrahedra around its diagonal, in two regions of three.
+VolumeMesh kuhn_cube() {
+  VolumeMesh mesh;
+  for (int k = 0; k < 8; ++k) mesh.vertices.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  // Paths 0 -> 7 through the cube's corners, one per permutation of the axes.
+  const int axes[6][3] = {{1, 2, 4}, {1, 4, 2}, {2, 1, 4}, {2, 4, 1}, {4, 1, 2}, {4, 2, 1}};
+  for (int i = 0; i < 6; ++i) {
+    Tetrahedron t{0, axes[i][0], axes[i][0] + axes[i][1], 7};
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]], &d = mesh.vertices[t[3]];
+    if ((b - a).dot((c - a).cross(d - a)) < 0) std::swap(t[1], t[2]);
+    mesh.tets.push_back(t);
+    mesh.tet_region.push_back(i < 3 ? 0 : 1);
+  }
+  mesh.region_names = {"lower", "upper"};
+  return mesh;
+}
+
+TEST(StatsModule, VolumeMeshFigures) {
+  ModuleRegistry registry;
+  voroseal_register_stats(registry);
+  const Module& stats = registry.get("stats");
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  Context context(log, progress);
+  context.model = std::make_shared<StructuralModel>(build_model(square(0.0)));
+  context.volume = std::make_shared<VolumeMesh>(kuhn_cube());
+  testing::internal::CaptureStdout();
+  stats.run(context, Parameters(stats.parameters(), {{"json", true}}));
+  const nlohmann::json j = nlohmann::json::parse(testing::internal::GetCapturedStdout());
+  const nlohmann::json& v = j.at("volume");
+  EXPECT_EQ(v["tets"], 6);
+  EXPECT_EQ(v["regions"], 2);
+  EXPECT_NEAR(v["total_volume"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(v["min_dihedral_deg"].get<double>(), 45.0, 1e-9);
+  EXPECT_EQ(v["nonpositive_tets"], 0);
+  ASSERT_EQ(v["region_volumes"].size(), 2u);
+  for (const auto& r : v["region_volumes"]) EXPECT_NEAR(r["volume"].get<double>(), 0.5, 1e-12);
+
+  // The same figures from a volume file given as the input.
+  const std::string path = testing::TempDir() + "voroseal_stats_kuhn.mesh";
+  write_volume_mesh(*context.volume, path);
+  Context from_file(log, progress);
+  from_file.input_path = path;
+  from_file.model = context.model;
+  testing::internal::CaptureStdout();
+  stats.run(from_file, Parameters(stats.parameters(), nlohmann::json::object()));
+  const std::string table = testing::internal::GetCapturedStdout();
+  EXPECT_NE(table.find("6 tets"), std::string::npos) << table;
+  std::remove(path.c_str());
+}
+
 // The Table-2 numbers agree with the referee meshreport on the RING models (numbers measured
 // with meshreport 2024; see the check/stats report): min angle, % < 30°, average Q, area, bbox
 // diagonal.

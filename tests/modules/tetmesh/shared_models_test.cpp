@@ -11,7 +11,7 @@
 
 #include "io/model_io.h"
 #include "modules/tetmesh/tetrahedralize.h"
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "tests/support/test_models.h"
 
 namespace voroseal {

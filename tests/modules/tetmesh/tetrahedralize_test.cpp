@@ -12,7 +12,7 @@
 #include "io/model_io.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "tests/support/test_models.h"
 
 namespace voroseal {

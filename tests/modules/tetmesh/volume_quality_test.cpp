@@ -1,4 +1,4 @@
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "modules/tetmesh/volume_quality.h"
+#include "framework/geometry/volume_quality.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
