@@ -409,7 +409,8 @@ class ModelBuilder {
       part.interface = it->second;
       part.name = parts_in_group[part_group_[p]] == 1
                       ? g.name
-                      : g.name + "#" + std::to_string(index_in_group[part_group_[p]]++);
+                      : g.name + "." + std::to_string(index_in_group[part_group_[p]]++);
+      part.source_group = part_group_[p];
     }
     build_part_meshes();
   }

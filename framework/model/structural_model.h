@@ -38,8 +38,9 @@ struct Interface {
 
 /// One surface part: a manifold, consistently oriented triangle mesh.
 struct SurfacePart {
-  std::string name;        // "<interface>/<k>" (k-th part of that interface)
+  std::string name;        // the group's name, "<group>.<k>" when a group gave several parts
   int interface = -1;      // index into StructuralModel::interfaces
+  int source_group = -1;   // index of the SurfaceSoup group it was built from
   SurfaceMesh mesh;        // points in the local frame
   /// Model vertex id of each mesh vertex (mesh vertex i -> model_vertex[i]). A vertex that is
   /// non-manifold inside the part appears several times in the mesh with the same model id.

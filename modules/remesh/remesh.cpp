@@ -60,13 +60,7 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
   // Map every output region to the input region its sides came from (majority of side votes).
   const auto input_sides = input.part_regions();
   auto input_region_of_side = [&](const Side& s) {
-    const SurfacePart& part = out.parts[s.part];
-    // Output part names are "<input part name>" or "<input part name>#k".
-    int p = -1;
-    for (size_t g = 0; g < soup.groups.size() && p < 0; ++g)
-      if (part.name == soup.groups[g].name || part.name.rfind(soup.groups[g].name + "#", 0) == 0)
-        p = part_of_group[g];
-    if (p < 0) return -3;
+    const int p = part_of_group[out.parts[s.part].source_group];
     return s.positive ? input_sides[p].first : input_sides[p].second;
   };
   std::vector<int> match(out.regions.size(), -1);

@@ -151,6 +151,12 @@ TEST(ModelBuilder, FeatureAngleSeparatesSidesOfOneGroup) {
   EXPECT_EQ(m.contacts.size(), 20u);
   EXPECT_EQ(m.corners.size(), 12u);
   EXPECT_EQ(m.regions.size(), 2u);
+  // The parts of one group are named "<group>.<k>" (no '#': OBJ readers cut names there) and
+  // remember their group.
+  for (size_t p = 0; p < m.parts.size(); ++p) {
+    EXPECT_EQ(m.parts[p].name, soup.groups[0].name + "." + std::to_string(p));
+    EXPECT_EQ(m.parts[p].source_group, 0);
+  }
 }
 
 TEST(ModelBuilder, DropsDegenerateAndDuplicateTriangles) {
