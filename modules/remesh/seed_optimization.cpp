@@ -1,0 +1,97 @@
+#include "modules/remesh/seed_optimization.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "framework/core/error.h"
+#include "modules/remesh/seed_energy.h"
+#include "modules/remesh/seed_sampling.h"
+
+namespace voroseal {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOptions& options, Logger& log,
+                                      Progress& progress) {
+  const auto t0 = Clock::now();
+  const ModelGeometry geometry(model, options.vertex_density);
+  int n = options.num_seeds;
+  if (n <= 0) {
+    if (!(options.edge_length > 0.0))
+      throw ParameterError("remesh: give a number of seeds or a positive target edge length");
+    n = seed_count_for_edge_length(geometry.area(), options.edge_length);
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "remesh: %d seeds on %zu triangles (area %.6g)", n, geometry.triangles().size(),
+                geometry.area());
+  log.info(line);
+  std::vector<Vec3> initial = sample_seeds(geometry, n, options.random_seed);
+  const double sampling = since(t0);
+  SeedOptimizationResult result = optimize_seeds(geometry, std::move(initial), options, log, progress);
+  result.sampling_seconds = sampling;
+  return result;
+}
+
+SeedOptimizationResult optimize_seeds(const ModelGeometry& geometry, std::vector<Vec3> initial,
+                                      const SeedOptions& options, Logger& log, Progress& progress) {
+  if (initial.empty()) throw ParameterError("remesh: no seed to optimise");
+  for (const Vec3& p : initial)
+    if (!p.allFinite()) throw ParameterError("remesh: a seed has a non-finite coordinate");
+  const auto t0 = Clock::now();
+  // Coincident seeds: the lowest index owns the cell and the others would keep an empty cell
+  // (zero gradient) for ever. Move each copy by a tiny, deterministic amount.
+  {
+    const double nudge = 1e-6 * std::sqrt(geometry.area() / initial.size());
+    const std::vector<Vec3> original = initial;
+    std::vector<int> order(initial.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      const Vec3 &x = original[a], &y = original[b];
+      return std::lexicographical_compare(x.data(), x.data() + 3, y.data(), y.data() + 3) || (x == y && a < b);
+    });
+    int moved = 0;
+    for (size_t k = 1; k < order.size(); ++k)
+      if (original[order[k]] == original[order[k - 1]]) {
+        ++moved;
+        initial[order[k]] += nudge * static_cast<double>(k) * Vec3(1.0, 0.618, 0.382);
+      }
+    if (moved > 0) log.warning("remesh: moved " + std::to_string(moved) + " coincident seeds apart");
+  }
+  SeedOptimizationResult result;
+  result.initial_seeds = initial;
+  SeedEnergy energy(geometry, options.threads);
+  double alpha = options.boundary_weight;
+  if (options.optimizer.kind == OptimizerKind::Lloyd) {
+    alpha = 0.0;
+  } else if (alpha < 0.0) {
+    EnergyEvaluation start;
+    energy.evaluate(initial, start, true);
+    alpha = boundary_weight_from_gradients(start);
+  }
+  if (!(alpha >= 0.0 && alpha <= 1.0)) throw ParameterError("remesh: the boundary weight must be in [0, 1]");
+  result.alpha = alpha;
+  char line[160];
+  std::snprintf(line, sizeof line, "remesh: boundary weight alpha = %.4g, optimizer %s", alpha,
+                to_string(options.optimizer.kind));
+  log.info(line);
+  SeedObjective objective(energy, alpha);
+  result.seeds = std::move(initial);
+  result.run = minimize_seed_energy(objective, result.seeds, options.optimizer, log, progress);
+  result.optimization_seconds = since(t0);
+  if (!result.run.history.empty()) {
+    const IterationRecord& a = result.run.history.front();
+    const IterationRecord& b = result.run.history.back();
+    std::snprintf(line, sizeof line, "remesh: %d iterations (%ld evaluations, %.2f s, stop: %s): F %.6g -> %.6g",
+                  b.iteration, result.run.evaluations, result.optimization_seconds, result.run.stop_reason.c_str(),
+                  a.energy, b.energy);
+    log.info(line);
+  }
+  return result;
+}
+
+}  // namespace voroseal

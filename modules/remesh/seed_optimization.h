@@ -1,0 +1,50 @@
+// Seed optimisation, the first step of the remesher (paper §3.1, Algorithm 1): sample seeds on
+// the model, then move them to minimise F = (1 − α) F_CVT + α F_B so that their restricted
+// Voronoi cells are compact, of equal ρ-weighted area, and sit on the contacts.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "framework/core/types.h"
+#include "framework/host/log.h"
+#include "framework/model/structural_model.h"
+#include "modules/remesh/model_geometry.h"
+#include "modules/remesh/optimizer.h"
+
+namespace voroseal {
+
+struct SeedOptions {
+  int num_seeds = 0;          // > 0: this many seeds
+  double edge_length = 0.0;   // else N from the target edge length (seed_count_for_edge_length)
+  std::vector<double> vertex_density;  // optional ρ at every model vertex (empty: uniform)
+  std::uint64_t random_seed = 1;       // initial sampling
+  OptimizerOptions optimizer;          // kind, iterations (default 100), gradient threshold
+  /// α in F = (1 − α) F_CVT + α F_B. Negative: from the gradient-norm ratio at the initial
+  /// seeds (boundary_weight_from_gradients), then fixed for the run. Lloyd always uses 0.
+  double boundary_weight = -1.0;
+  int threads = 0;                     // OpenMP threads, 0: default
+};
+
+struct SeedOptimizationResult {
+  std::vector<Vec3> seeds;           // optimised seeds, local frame of the model
+  std::vector<Vec3> initial_seeds;   // the random sampling they started from
+  double alpha = 0.0;                // the boundary weight used
+  OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
+  double sampling_seconds = 0.0;
+  double optimization_seconds = 0.0;
+};
+
+/// Samples and optimises seeds on `model`.
+/// \throws ParameterError (neither num_seeds nor a positive edge_length, a bad density,
+///         Ceres requested but not built), ModelError (no triangle, zero area).
+SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOptions& options, Logger& log,
+                                      Progress& progress);
+
+/// The same from given initial seeds on a prepared geometry (options.num_seeds, edge_length,
+/// vertex_density and random_seed are ignored).
+SeedOptimizationResult optimize_seeds(const ModelGeometry& geometry, std::vector<Vec3> initial,
+                                      const SeedOptions& options, Logger& log, Progress& progress);
+
+}  // namespace voroseal

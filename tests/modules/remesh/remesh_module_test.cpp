@@ -1,0 +1,124 @@
+// The remesh module's seed stage through the plugin interface, and seed optimisation on the
+// shared RING models (skipped when ../shared/models is absent).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "framework/core/error.h"
+#include "framework/host/context.h"
+#include "framework/host/registry.h"
+#include "framework/model/model_builder.h"
+#include "io/model_io.h"
+#include "modules/remesh/model_geometry.h"
+#include "modules/remesh/restricted_voronoi_diagram.h"
+#include "modules/remesh/seed_optimization.h"
+#include "modules/remesh/seed_sampling.h"
+#include "tests/modules/remesh/synthetic_surfaces.h"
+#include "tests/support/test_models.h"
+
+void voroseal_register_remesh(voroseal::ModuleRegistry&);
+
+namespace voroseal {
+namespace {
+
+TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
+  ModuleRegistry registry;
+  voroseal_register_remesh(registry);
+  const Module& module = registry.get("remesh");
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  Context context(log, progress);
+  SurfaceSoup soup = test::flat_square(10, 100.0);
+  for (Vec3& p : soup.points) p += Vec3(500000.0, 4000000.0, -1000.0);  // UTM-like
+  context.model = std::make_shared<StructuralModel>(build_model(soup));
+  const std::string path = (std::filesystem::temp_directory_path() / "voroseal_remesh_seeds_test.xyz").string();
+  std::filesystem::remove(path);
+  const Parameters params(module.parameters(), {{"seeds", 40}, {"iterations", 15}, {"dump-seeds", path}});
+  module.run(context, params);
+
+  std::ifstream in(path);
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int lines = 0;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    double x, y, z;
+    ASSERT_TRUE(static_cast<bool>(ls >> x >> y >> z)) << line;
+    EXPECT_NEAR(x, 500050.0, 50.0 + 1e-6);
+    EXPECT_NEAR(y, 4000050.0, 50.0 + 1e-6);
+    EXPECT_NEAR(z, -1000.0, 1.0);
+    ++lines;
+  }
+  EXPECT_EQ(lines, 40);
+  std::filesystem::remove(path);
+
+  const nlohmann::json& r = context.report.at("remesh");
+  EXPECT_EQ(r.at("seeds").get<int>(), 40);
+  EXPECT_EQ(r.at("optimizer").get<std::string>(), "lbfgs");
+  ASSERT_GE(r.at("history").size(), 2u);
+  EXPECT_LT(r.at("history").back().at("energy").get<double>(), r.at("history").front().at("energy").get<double>());
+  EXPECT_TRUE(r.at("timings").contains("optimization_s"));
+}
+
+TEST(RemeshModule, RejectsBadParameters) {
+  ModuleRegistry registry;
+  voroseal_register_remesh(registry);
+  const Module& module = registry.get("remesh");
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  Context context(log, progress);
+  context.model = std::make_shared<StructuralModel>(build_model(test::flat_square(4)));
+  EXPECT_THROW(Parameters(module.parameters(), {{"seeds", 0}}), ParameterError);
+  EXPECT_THROW(Parameters(module.parameters(), {{"optimizer", "newton"}}), ParameterError);
+  EXPECT_THROW(Parameters(module.parameters(), {{"boundary-weight", 1.5}}), ParameterError);
+  EXPECT_THROW(module.run(context, Parameters(module.parameters(), nlohmann::json::object())), ParameterError);
+  EXPECT_THROW(module.run(context, Parameters(module.parameters(), {{"edge-length", 0.0}})), ParameterError);
+  if (!ceres_available()) {
+    EXPECT_THROW(module.run(context, Parameters(module.parameters(), {{"seeds", 5}, {"optimizer", "ceres"}})),
+                 ParameterError);
+  }
+}
+
+TEST(SharedModels, RestrictedVoronoiDiagramPartitionsRingModels) {
+  for (const char* name : {"ring/modelA1.ml", "ring/CloudSpin_fixed.ml"}) {
+    SCOPED_TRACE(name);
+    VOROSEAL_REQUIRE_SHARED(path, name);
+    const StructuralModel model = read_model(path);
+    const ModelGeometry geometry(model);
+    const std::vector<Vec3> seeds = sample_seeds(geometry, 3000, 1);
+    const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, seeds);
+    double area = 0.0;
+    for (int p = 0; p < static_cast<int>(rvd.polygons.size()); ++p) area += rvd.polygon_area(p);
+    EXPECT_NEAR(area, geometry.area(), 1e-9 * geometry.area());
+    double contact_length = 0.0, segment_length = 0.0;
+    for (const Contact& c : model.contacts)
+      for (size_t k = 0; k + 1 < c.vertices.size(); ++k)
+        contact_length += (model.vertices[c.vertices[k + 1]] - model.vertices[c.vertices[k]]).norm();
+    for (const RvdContactSegment& s : rvd.segments) segment_length += (s.end[1] - s.end[0]).norm();
+    EXPECT_NEAR(segment_length, contact_length, 1e-9 * contact_length);
+    EXPECT_EQ(rvd.corners.size(), model.corners.size());
+  }
+}
+
+TEST(SharedModels, SeedOptimisationLowersTheEnergyOnModelA1) {
+  VOROSEAL_REQUIRE_SHARED(path, "ring/modelA1.ml");
+  const StructuralModel model = read_model(path);
+  SeedOptions options;
+  options.num_seeds = 2000;
+  options.optimizer.max_iterations = 30;
+  Logger log(LogLevel::Quiet);
+  Progress progress(false);
+  const SeedOptimizationResult r = optimize_seeds(model, options, log, progress);
+  ASSERT_EQ(r.seeds.size(), 2000u);
+  for (size_t k = 1; k < r.run.history.size(); ++k) EXPECT_LT(r.run.history[k].energy, r.run.history[k - 1].energy);
+  EXPECT_LT(r.run.history.back().energy, 0.6 * r.run.history.front().energy);
+  EXPECT_LT(r.run.history.back().gradient_norm, 0.2 * r.run.history.front().gradient_norm);
+}
+
+}  // namespace
+}  // namespace voroseal
