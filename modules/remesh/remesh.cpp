@@ -127,8 +127,13 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
 }
 
 RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress) {
+  return remesh_from_seeds(input, optimize_seeds(input, options.seeds, log, progress), options, log);
+}
+
+RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationResult seeds,
+                               const RemeshOptions& options, Logger& log) {
   RemeshResult result;
-  result.seeds = optimize_seeds(input, options.seeds, log, progress);
+  result.seeds = std::move(seeds);
 
   auto t0 = std::chrono::steady_clock::now();
   const ModelGeometry geometry(input, options.seeds.vertex_density);

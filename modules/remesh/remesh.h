@@ -60,6 +60,11 @@ struct RemeshResult {
 /// cannot form a model).
 RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress);
 
+/// The steps after the seed optimisation, from given optimised seeds (options.seeds is used for
+/// the density and the thread count only).
+RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationResult seeds,
+                               const RemeshOptions& options, Logger& log);
+
 /// The output model from remeshed surfaces: parts, contacts, corners and regions inferred from
 /// the triangles; part, interface and region names taken from the input.
 StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,

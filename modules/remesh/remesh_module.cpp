@@ -123,14 +123,15 @@ class RemeshModule final : public Module {
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
     remesh_options.clean_up = !parameters.get_bool("no-cleanup");
-    RemeshResult result = remesh(*context.model, remesh_options, context.log, context.progress);
-    const SeedOptimizationResult& r = result.seeds;
-
+    SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
+    // The seeds are written before mesh building, so that they are there whatever happens next.
     if (parameters.has("dump-seeds")) {
       const std::string path = parameters.get_string("dump-seeds");
-      dump_seeds(r.seeds, context.model->frame, path, context.input_path);
-      context.log.info("remesh: wrote " + std::to_string(r.seeds.size()) + " seeds to " + path);
+      dump_seeds(seeds.seeds, context.model->frame, path, context.input_path);
+      context.log.info("remesh: wrote " + std::to_string(seeds.seeds.size()) + " seeds to " + path);
     }
+    RemeshResult result = remesh_from_seeds(*context.model, std::move(seeds), remesh_options, context.log);
+    const SeedOptimizationResult& r = result.seeds;
 
     nlohmann::json history = nlohmann::json::array();
     for (const IterationRecord& it : r.run.history)
@@ -195,8 +196,13 @@ class RemeshModule final : public Module {
  private:
   static nlohmann::json features_json(const std::vector<VertexFeature>& features) {
     nlohmann::json list = nlohmann::json::array();
-    static const char* kinds[] = {"surface", "contact", "corner"};
-    for (const VertexFeature& f : features) list.push_back({{"kind", kinds[f.kind]}, {"id", f.id}});
+    for (const VertexFeature& f : features) {
+      const char* kind = f.kind == VertexFeature::Surface   ? "surface"
+                         : f.kind == VertexFeature::Contact ? "contact"
+                         : f.kind == VertexFeature::Corner  ? "corner"
+                                                            : "unknown";
+      list.push_back({{"kind", kind}, {"id", f.id}});
+    }
     return list;
   }
   static nlohmann::json topology_json(const TopologyReport& t, const StructuralModel& input) {
