@@ -168,7 +168,8 @@ int read_output(std::FILE* f, tetgenio& out) {
 
 }  // namespace
 
-int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::string& printed) {
+int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::string& printed,
+               double sliver_dihedral_deg) {
   std::vector<char> buffer(switches.begin(), switches.end());
   buffer.push_back('\0');
   tetgenbehavior behavior;
@@ -177,6 +178,13 @@ int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::st
       behavior.coarsen || behavior.order == 2) {
     printed = capture.finish();
     return 10;
+  }
+  if (sliver_dihedral_deg > 0.0) {
+    // Both: smoothing drops from its queue the tets below its own threshold before the
+    // splitting sees them (improvequalitybysmoothing), so a lower split threshold alone does
+    // nothing.
+    behavior.optminsmtdihed = sliver_dihedral_deg;
+    behavior.optminslidihed = sliver_dihedral_deg;
   }
 
   std::FILE* result = std::tmpfile();

@@ -29,9 +29,17 @@ constexpr int kTetgenCrashed = -1;
 /// d, J, Q, V, O, T; not r, m, i, R, o2) with a heap-allocated mesh that is not destroyed after
 /// a failure.
 ///
+/// `sliver_dihedral_deg` > 0 makes TetGen's optimisation step (-O, on by default) smooth Steiner
+/// points of, and split, every tet whose largest dihedral angle exceeds it. TetGen 1.5 fixes
+/// both thresholds at 179° and no switch sets them, so only the flattest slivers are treated;
+/// slivers spanning a layer thinner than the surface triangles (all four vertices on surfaces,
+/// largest angle 170–178°) stay. Pair it with the switch `o/<same angle>` (the flip target).
+/// 0 keeps TetGen's thresholds.
+///
 /// Runs are serialised (by the stdout capture's lock), which TetGen needs anyway in-process:
 /// exactinit() sets its predicates' static error bounds from each input's bounding box.
 /// \throws MesherError when stdout cannot be captured or the child's output cannot be read.
-int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::string& printed);
+int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::string& printed,
+               double sliver_dihedral_deg = 0.0);
 
 }  // namespace voroseal

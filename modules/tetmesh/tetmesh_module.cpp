@@ -38,11 +38,18 @@ class TetmeshModule : public Module {
     volume.min = 0.0;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
                        "keep the surface triangles exactly (switch Y): tets conformal to the surfaces"};
-    ParameterSpec slivers{"sliver-passes", ParameterType::Int, 2,
-                          "extra TetGen runs with interior points added next to slivers on the kept surface"};
+    ParameterSpec slivers{"sliver-passes", ParameterType::Int, 4,
+                          "extra TetGen runs with interior points added next to the slivers TetGen leaves by the kept "
+                          "surface"};
     slivers.min = 0;
     slivers.max = 10;
-    return {output, quality, dihedral, volume, keep, slivers};
+    ParameterSpec optimise{"sliver-max-dihedral", ParameterType::Double, 150.0,
+                           "TetGen's optimisation flips, smooths and splits tets whose largest dihedral angle "
+                           "exceeds this (0, or 90 to 180 degrees; with --quality > 0 and no --max-volume); "
+                           "0: TetGen's own thresholds (165/179)"};
+    optimise.min = 0.0;
+    optimise.max = 179.9;
+    return {output, quality, dihedral, volume, keep, slivers, optimise};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -54,6 +61,7 @@ class TetmeshModule : public Module {
     if (parameters.has("max-volume")) options.max_volume = parameters.get_double("max-volume");
     options.keep_surface = parameters.get_bool("keep-surface");
     options.sliver_passes = static_cast<int>(parameters.get_int("sliver-passes"));
+    options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");
 
     const auto start = std::chrono::steady_clock::now();
     context.progress.start("tetmesh " + model.name, 0);
@@ -78,6 +86,16 @@ class TetmeshModule : public Module {
                          {"relative_error", error}});
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The tets below the dihedral bound, by what holds them there (SliverCensus).
+    auto group = [](const SliverCensus::Group& g) {
+      return nlohmann::json{{"tets", g.tets}, {"min_dihedral_deg", g.min_dihedral_deg}};
+    };
+    const nlohmann::json slivers = {{"bound_deg", run.slivers.bound_deg},
+                                    {"tets", run.slivers.total()},
+                                    {"wedge", group(run.slivers.wedge)},
+                                    {"needle", group(run.slivers.needle)},
+                                    {"surface", group(run.slivers.surface)},
+                                    {"interior", group(run.slivers.interior)}};
     nlohmann::json report = {
         {"switches", run.switches},
         {"input", {{"points", run.input_points}, {"triangles", run.input_facets}, {"regions", model.regions.size()}}},
@@ -90,6 +108,9 @@ class TetmeshModule : public Module {
         {"attempts", run.attempts},
         {"sliver_passes", run.sliver_passes},
         {"sliver_points", run.sliver_points},
+        {"surface_min_angle_deg", run.surface_min_angle_deg},
+        {"surface_needles", run.surface_needles},
+        {"slivers", slivers},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},

@@ -393,66 +393,185 @@ double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
   return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
 }
 
-/// Interior points that break surface slivers: tets below `bound_deg` with a face on a
-/// well-shaped surface triangle (smallest angle >= 20°; slivers on needles cannot be fixed
-/// without changing the surface). Such a tet spans a slight fold between surface triangles, or
-/// lies flat on one, and TetGen cannot split it under Y: its circumcentre encroaches upon the
-/// surface. A point moved from the tet's centroid into the region, by min(0.3 × mean edge,
-/// 0.5 × circumradius) along the mean inward normal of its surface faces, lies inside its
-/// circumsphere, so the next Delaunay tetrahedralization no longer holds the sliver. The point
-/// must be reached from the centroid without crossing a surface and keep 0.15 × mean edge from
-/// every surface; points closer than 0.3 × mean edge to an earlier one are dropped.
-/// `unfixable` gets the smallest dihedral angle of the slivers this cannot treat (on needle
-/// triangles, or with no surface face: TetGen's refinement did not split them), 180 if none:
-/// when the worst tet is one of them, another pass cannot raise the minimum.
+/// Circumcentre of the tet p[0..3] (not flat).
+Vec3 circumcentre(const Vec3 p[4]) {
+  Eigen::Matrix3d a;
+  Vec3 rhs;
+  for (int r = 0; r < 3; ++r) {
+    a.row(r) = (p[r + 1] - p[0]).transpose();
+    rhs[r] = 0.5 * (p[r + 1] - p[0]).squaredNorm();
+  }
+  return p[0] + a.fullPivLu().solve(rhs);
+}
+
+/// Which faces of tet `t` (opposite vertex i) are surface triangles.
+std::array<bool, 4> faces_on_surface(const std::unordered_set<Key, KeyHash>& surface_faces, const Tetrahedron& t) {
+  std::array<bool, 4> on{};
+  for (int opposite = 0; opposite < 4; ++opposite)
+    on[opposite] = surface_faces.count(sorted_key(t[(opposite + 1) % 4], t[(opposite + 2) % 4], t[(opposite + 3) % 4])) > 0;
+  return on;
+}
+
+/// True when two faces of a tet lie on surfaces and meet at an angle below `bound_deg`
+/// (`dihedral` in dihedral_angles_deg's edge order 01 02 03 12 13 23).
+bool surface_wedge(const std::array<bool, 4>& on_surface, const std::array<double, 6>& dihedral, double bound_deg) {
+  // The faces opposite vertices a and b share the edge joining the two other vertices.
+  static const int shared_edge[4][4] = {{-1, 5, 4, 3}, {5, -1, 2, 1}, {4, 2, -1, 0}, {3, 1, 0, -1}};
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (on_surface[a] && on_surface[b] && dihedral[shared_edge[a][b]] < bound_deg) return true;
+  return false;
+}
+
+std::unordered_set<Key, KeyHash> surface_face_set(const VolumeMesh& mesh) {
+  std::unordered_set<Key, KeyHash> faces;
+  faces.reserve(2 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) faces.insert(sorted_key(t[0], t[1], t[2]));
+  return faces;
+}
+
+/// Interior points against the tets below `bound_deg` that TetGen left because, under Y, it
+/// inserts no point that encroaches upon a kept surface triangle (inside its diametral ball):
+///  - a tet with a face on a well-shaped surface triangle (smallest angle >= 20°) spans a
+///    slight fold between surface triangles or lies flat on one: its point is moved from the
+///    tet's centroid into the region by min(0.3 × mean edge, 0.5 × circumradius) along the mean
+///    inward normal of its surface faces, inside its circumsphere, so the next Delaunay
+///    tetrahedralization no longer holds it; the point keeps 0.15 × mean edge from every surface;
+///  - a tet with no face on a surface sees a short edge from far vertices (two contact lines
+///    close together, a thin fault strip): its point is the off-centre of its shortest edge
+///    (after Üngör's off-centres): on the segment from the edge's midpoint to the circumcentre,
+///    at most 2 × the edge's length from the midpoint. The tets it makes with that edge are well
+///    shaped and their own slivers, one pass later, get points twice as far: repeated passes
+///    grade the mesh from the short edge to the surrounding tet size, which TetGen's refinement
+///    cannot do next to a kept surface. The point keeps 0.3 × that edge from every surface.
+/// Points must be reached from the tet's centroid without crossing a surface (so they lie in its
+/// region); points closer than 0.3 × the local size to an earlier one are dropped. Tets on a
+/// needle triangle (< 20°) get no point (one next to the needle makes more slivers than it
+/// removes); points for their neighbours often change them in the next run.
+/// `forced` gets the smallest dihedral angle of the tets no point can raise, 180 if none: two of
+/// their faces on surfaces that meet at an angle below the bound (a wedge between two surfaces:
+/// every mesh keeping them holds a tet with that angle or a smaller one). When the worst tet is
+/// one of them, another pass cannot raise the minimum.
 std::vector<Vec3> sliver_points(const VolumeMesh& mesh, const TriangleTree& surfaces, double bound_deg,
-                                const std::vector<Vec3>& earlier, double& unfixable) {
-  unfixable = 180.0;
-  std::unordered_set<Key, KeyHash> surface_faces;
-  surface_faces.reserve(2 * mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles) surface_faces.insert(sorted_key(t[0], t[1], t[2]));
+                                const std::vector<Vec3>& earlier, double& forced) {
+  constexpr double kNeedleDeg = 20.0;     // no point for tets on sharper surface triangles
+  constexpr double kOffCentreSpan = 2.0;  // off-centre distance, in shortest edges
+  forced = 180.0;
+  const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
   std::vector<Vec3> points;
   std::vector<double> spacing;
+  auto crowded = [&](const Vec3& candidate, double size) {
+    for (const Vec3& q : earlier)
+      if ((q - candidate).norm() < 0.3 * size) return true;
+    for (size_t q = 0; q < points.size(); ++q)
+      if ((points[q] - candidate).norm() < 0.3 * std::min(size, spacing[q])) return true;
+    return false;
+  };
   for (const Tetrahedron& t : mesh.tets) {
-    const double angle = min_dihedral(mesh, t);
-    if (angle >= bound_deg) continue;
     const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]};
+    const auto dihedral = dihedral_angles_deg(p[0], p[1], p[2], p[3]);
+    const double angle = *std::min_element(dihedral.begin(), dihedral.end());
+    if (angle >= bound_deg) continue;
+    const std::array<bool, 4> on_surface = faces_on_surface(surface_faces, t);
+    if (surface_wedge(on_surface, dihedral, bound_deg)) {
+      forced = std::min(forced, angle);
+      continue;
+    }
     Vec3 inward = Vec3::Zero();
-    bool usable = true;
+    double sharpest = 180.0;  // smallest angle of its surface faces
     int faces = 0;
-    for (int opposite = 0; opposite < 4 && usable; ++opposite) {
+    for (int opposite = 0; opposite < 4; ++opposite) {
+      if (!on_surface[opposite]) continue;
       const int i = (opposite + 1) % 4, j = (opposite + 2) % 4, k = (opposite + 3) % 4;
-      if (!surface_faces.count(sorted_key(t[i], t[j], t[k]))) continue;
       ++faces;
-      usable = smallest_angle_deg(p[i], p[j], p[k]) >= 20.0;
+      sharpest = std::min(sharpest, smallest_angle_deg(p[i], p[j], p[k]));
       Vec3 n = (p[j] - p[i]).cross(p[k] - p[i]).normalized();
       if (n.dot(p[opposite] - p[i]) < 0.0) n = -n;
       inward += n;
     }
-    if (faces == 0 || !usable) unfixable = std::min(unfixable, angle);
-    if (faces == 0 || !usable || !(inward.norm() > 1e-9)) continue;
+    if (sharpest < kNeedleDeg) continue;
+
     const Vec3 centroid = (p[0] + p[1] + p[2] + p[3]) / 4.0;
-    double mean_edge = 0.0;
+    double mean_edge = 0.0, shortest = std::numeric_limits<double>::infinity();
+    int sa = 0, sb = 1;
     for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) mean_edge += (p[a] - p[b]).norm() / 6.0;
-    const double ratio = radius_edge_ratio(p[0], p[1], p[2], p[3]);
-    double shortest = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) shortest = std::min(shortest, (p[a] - p[b]).norm());
-    const double circumradius = std::isfinite(ratio) ? ratio * shortest : mean_edge;
-    const Vec3 candidate = centroid + std::min(0.3 * mean_edge, 0.5 * circumradius) * inward.normalized();
-    if (surfaces.segment_hits(centroid, candidate) || surfaces.distance(candidate) < 0.15 * mean_edge) continue;
-    bool crowded = false;
-    for (size_t q = 0; q < earlier.size() && !crowded; ++q) crowded = (earlier[q] - candidate).norm() < 0.3 * mean_edge;
-    for (size_t q = 0; q < points.size() && !crowded; ++q) crowded = (points[q] - candidate).norm() < 0.3 * std::max(mean_edge, spacing[q]);
-    if (crowded) continue;
+      for (int b = a + 1; b < 4; ++b) {
+        const double length = (p[a] - p[b]).norm();
+        mean_edge += length / 6.0;
+        if (length < shortest) {
+          shortest = length;
+          sa = a;
+          sb = b;
+        }
+      }
+    const Vec3 centre = circumcentre(p);
+    if (!std::isfinite(centre.squaredNorm())) continue;
+    Vec3 candidate;
+    double size;
+    if (faces > 0) {
+      if (!(inward.norm() > 1e-9)) continue;
+      const double circumradius = (centre - p[0]).norm();
+      candidate = centroid + std::min(0.3 * mean_edge, 0.5 * circumradius) * inward.normalized();
+      size = mean_edge;
+      if (surfaces.distance(candidate) < 0.15 * mean_edge) continue;
+    } else {
+      const Vec3 middle = 0.5 * (p[sa] + p[sb]);
+      const Vec3 towards = centre - middle;
+      if (!(towards.norm() > 1e-9 * shortest)) continue;
+      candidate = middle + std::min(towards.norm(), kOffCentreSpan * shortest) * towards.normalized();
+      size = shortest;
+      if (surfaces.distance(candidate) < 0.3 * shortest) continue;
+    }
+    if (surfaces.segment_hits(centroid, candidate) || crowded(candidate, size)) continue;
     points.push_back(candidate);
-    spacing.push_back(mean_edge);
+    spacing.push_back(size);
   }
   return points;
 }
 
+/// Smallest angle of the model's triangles (degrees) and how many are sharper than 1°.
+std::pair<double, long> surface_needles(const StructuralModel& model) {
+  double smallest = 180.0;
+  long needles = 0;
+  for (const Triangle& t : flatten(model).triangles) {
+    const double angle = smallest_angle_deg(model.vertices[t[0]], model.vertices[t[1]], model.vertices[t[2]]);
+    smallest = std::min(smallest, angle);
+    if (angle < 1.0) ++needles;
+  }
+  return {smallest, needles};
+}
+
 }  // namespace
+
+double optimisation_threshold(const TetmeshOptions& options) {
+  return options.radius_edge_ratio > 0.0 && options.max_volume == 0.0 ? options.sliver_max_dihedral_deg : 0.0;
+}
+
+SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
+  SliverCensus census;
+  census.bound_deg = bound_deg;
+  if (!(bound_deg > 0.0)) return census;
+  const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
+  // Per vertex: 0 inside, 1 on a surface, 2 on a needle (a triangle sharper than the bound).
+  std::vector<char> kind(mesh.vertices.size(), 0);
+  for (const Triangle& t : mesh.triangles) {
+    const char k = smallest_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) < bound_deg ? 2 : 1;
+    for (int v : t) kind[v] = std::max(kind[v], k);
+  }
+  for (const Tetrahedron& t : mesh.tets) {
+    const auto dihedral = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
+    const double angle = *std::min_element(dihedral.begin(), dihedral.end());
+    if (angle >= bound_deg) continue;
+    const int k = std::max({kind[t[0]], kind[t[1]], kind[t[2]], kind[t[3]]});
+    SliverCensus::Group& group = surface_wedge(faces_on_surface(surface_faces, t), dihedral, bound_deg) ? census.wedge
+                                 : k == 2                                                                ? census.needle
+                                 : k == 1                                                                ? census.surface
+                                                                                                         : census.interior;
+    ++group.tets;
+    group.min_dihedral_deg = std::min(group.min_dihedral_deg, angle);
+  }
+  return census;
+}
 
 std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
   std::string s = "p";
@@ -461,6 +580,7 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
     if (options.min_dihedral_deg > 0.0) s += "/" + number(options.min_dihedral_deg);
   }
   if (options.max_volume > 0.0) s += "a" + number(options.max_volume);
+  if (optimisation_threshold(options) > 0.0) s += "o/" + number(options.sliver_max_dihedral_deg);
   s += "A";
   if (options.keep_surface) s += "Y";
   s += "J";
@@ -477,6 +597,10 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
   if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
     throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
+  if (!(options.sliver_max_dihedral_deg == 0.0 ||
+        (options.sliver_max_dihedral_deg > 90.0 && options.sliver_max_dihedral_deg < 180.0)))
+    throw ParameterError("sliver dihedral threshold " + number(options.sliver_max_dihedral_deg) +
+                         " out of range: 0 (TetGen's own) or in (90, 180) degrees");
   if (!(options.sliver_passes >= 0 && options.sliver_passes <= 10))
     throw ParameterError("sliver passes " + std::to_string(options.sliver_passes) + " out of range [0, 10]");
   if (!(options.attempts >= 1 && options.attempts <= 10))
@@ -497,11 +621,26 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   info.input_facets = in.numberoffacets;
   log.debug("tetmesh: PLC of " + std::to_string(plc_points) + " points, " + std::to_string(in.numberoffacets) +
             " facets, " + std::to_string(in.numberofregions) + " region points (" + number(info.plc_seconds) + " s)");
-  info.switches = tetgen_switches(options, log.level() < LogLevel::Debug);
+  // Needle-filled surfaces (raw inputs: 1.2–18 % of the RING models' triangles are sharper
+  // than 1°, at most 0.02 % of remeshed ones) keep a minimum dihedral angle of 0° whatever is
+  // done inside the regions: TetGen's own optimisation thresholds and no sliver passes, which
+  // would cost 3–4 times the TetGen time (raw modelA4: 16 s → 56 s) for nothing.
+  const auto [smallest_angle, needles] = surface_needles(model);
+  info.surface_min_angle_deg = smallest_angle;
+  info.surface_needles = needles;
+  const bool needle_filled = needles > 0.002 * model.num_triangles();
+  TetmeshOptions effective = options;
+  if (needle_filled) {
+    effective.sliver_max_dihedral_deg = 0.0;
+    effective.sliver_passes = 0;
+    log.debug("tetmesh: " + std::to_string(needles) + " of " + std::to_string(model.num_triangles()) +
+              " triangles are sharper than 1 deg: TetGen's own optimisation thresholds, no sliver passes");
+  }
+  info.switches = tetgen_switches(effective, log.level() < LogLevel::Debug);
 
   auto tetgen = [&](tetgenio& out, std::string& printed, const std::string& what) {
     const auto began = std::chrono::steady_clock::now();
-    const int code = run_tetgen(info.switches, in, out, printed);
+    const int code = run_tetgen(info.switches, in, out, printed, optimisation_threshold(effective));
     info.tetgen_seconds += seconds_since(began);
     if (!printed.empty()) log.debug("TetGen -" + info.switches + " output (" + what + "):\n" + printed);
     return code;
@@ -573,22 +712,23 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   // Sliver passes (see sliver_points), when the surface is kept and a dihedral bound is asked.
   const bool chase_slivers = options.keep_surface && options.radius_edge_ratio > 0.0 && options.min_dihedral_deg > 0.0;
   std::unique_ptr<TriangleTree> surfaces;
-  std::vector<Vec3> extra;  // interior points added against slivers
+  std::vector<Vec3> kept;  // interior points of the kept mesh, added against slivers
   double best_angle = min_dihedral(best.mesh);
-  for (int pass = 1; chase_slivers && pass <= options.sliver_passes && best_angle < options.min_dihedral_deg; ++pass) {
+  for (int pass = 1; chase_slivers && pass <= effective.sliver_passes && best_angle < options.min_dihedral_deg; ++pass) {
     if (!surfaces) surfaces = std::make_unique<TriangleTree>(model.vertices, flatten(model).triangles);
-    double unfixable = 180.0;
-    const std::vector<Vec3> more = sliver_points(best.mesh, *surfaces, options.min_dihedral_deg, extra, unfixable);
-    if (more.empty() || unfixable <= best_angle) break;  // nothing to do, or the worst tet is out of reach
-    extra.insert(extra.end(), more.begin(), more.end());
+    double forced = 180.0;
+    const std::vector<Vec3> more = sliver_points(best.mesh, *surfaces, options.min_dihedral_deg, kept, forced);
+    if (more.empty() || forced <= best_angle) break;  // nothing to do, or the worst tet is out of reach
+    std::vector<Vec3> trial = kept;
+    trial.insert(trial.end(), more.begin(), more.end());
     info.sliver_passes = pass;
     // The PLC points, then the sliver points as isolated vertices.
     delete[] in.pointlist;
-    in.numberofpoints = plc_points + static_cast<int>(extra.size());
+    in.numberofpoints = plc_points + static_cast<int>(trial.size());
     in.pointlist = new REAL[3 * in.numberofpoints];
     std::copy(plc_coordinates.begin(), plc_coordinates.end(), in.pointlist);
-    for (size_t e = 0; e < extra.size(); ++e)
-      for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = extra[e][d];
+    for (size_t e = 0; e < trial.size(); ++e)
+      for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = trial[e][d];
     tetgenio out;
     std::string printed;
     const int code = tetgen(out, printed, "sliver pass " + std::to_string(pass));
@@ -599,19 +739,35 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     }
     ConvertedMesh converted = to_volume_mesh(model, map, in, plc_points, out);
     const double angle = min_dihedral(converted.mesh);
-    log.debug("tetmesh: sliver pass " + std::to_string(pass) + ": " + std::to_string(extra.size()) +
-              " points, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
-    if (angle > best_angle && converted.split_facets <= best.split_facets) {
-      best = std::move(converted);
-      best_angle = angle;
-      info.tetgen_output = printed;
-      info.sliver_points = static_cast<int>(extra.size());
-    }
+    log.debug("tetmesh: sliver pass " + std::to_string(pass) + ": " + std::to_string(more.size()) + " more points (" +
+              std::to_string(trial.size()) + " in all), min dihedral " + number(angle) + " deg (was " +
+              number(best_angle) + ")");
+    // The next pass would start from the same mesh and find the same points: stop.
+    if (!(angle > best_angle && converted.split_facets <= best.split_facets)) break;
+    best = std::move(converted);
+    best_angle = angle;
+    kept = std::move(trial);
+    info.tetgen_output = printed;
+    info.sliver_points = static_cast<int>(kept.size());
   }
 
   VolumeMesh& mesh = best.mesh;
   info.steiner_points = static_cast<int>(mesh.vertices.size()) - plc_points;
   info.split_facets = best.split_facets;
+  info.slivers = sliver_census(mesh, options.min_dihedral_deg);
+  if (info.slivers.total() > 0) {
+    std::string groups;
+    auto add = [&](const SliverCensus::Group& g, const char* what) {
+      if (g.tets == 0) return;
+      groups += (groups.empty() ? "" : ", ") + std::to_string(g.tets) + " " + what + " (min " + number(g.min_dihedral_deg) + " deg)";
+    };
+    add(info.slivers.wedge, "in wedges between surfaces");
+    add(info.slivers.needle, "on needle triangles");
+    add(info.slivers.surface, "other next to surfaces");
+    add(info.slivers.interior, "inside");
+    log.info("tetmesh: " + std::to_string(info.slivers.total()) + " tets below " + number(options.min_dihedral_deg) +
+             " deg: " + groups);
+  }
   if (info.attempts > 1)
     log.info("tetmesh: TetGen needed " + std::to_string(info.attempts) + " attempts (facet orders) on model '" +
              model.name + "'");

@@ -21,6 +21,19 @@ struct TetmeshOptions {
   double min_dihedral_deg = 10.0;
   /// Maximum tet volume in model units³, switch `a<volume>`; 0 = no bound.
   double max_volume = 0.0;
+  /// TetGen's mesh optimisation (after refinement) works on every tet whose largest dihedral
+  /// angle exceeds this (degrees): edge/face flips (switch `o/<angle>`), smoothing of the points
+  /// TetGen added, and sliver splitting by a point inside the sliver's edge star (both set in
+  /// run_tetgen(), no switch reaches them). TetGen's own thresholds (0 here) are 165° for the
+  /// flips and 179° for the rest, which leaves the slivers spanning a layer thinner than its
+  /// surface triangles: all four vertices on the two surfaces, largest angle 170–178°, their
+  /// circumcentres encroaching upon the kept surface so that refinement cannot split them
+  /// (remeshed modelA1: min dihedral 0.76° → 12.5°). The flips trade radius–edge ratio for
+  /// dihedral angles (bundled folded_layers: largest ratio 1.5 → 3.2, largest angle 165° → 150°).
+  /// Used with quality refinement only (radius_edge_ratio > 0), without a volume bound (its
+  /// flips and smoothing ignore the bound: 29 % over it on a test box) and not on needle-filled
+  /// surfaces (see tetrahedralize()). 0 or in (90, 180).
+  double sliver_max_dihedral_deg = 150.0;
   // With keep_surface TetGen inserts no point that encroaches upon a kept surface triangle, so
   // the three bounds above hold away from the surfaces and, next to them, only as far as the
   // surface triangles allow: a tet on a coarse or needle triangle keeps that triangle's size
@@ -28,11 +41,11 @@ struct TetmeshOptions {
   /// Keep the surface mesh exactly (switch `Y`): no Steiner point on any surface, so every
   /// model triangle is a face of a tet. Off, TetGen may split surface triangles.
   bool keep_surface = true;
-  /// Extra TetGen runs against surface slivers (kept surface and a dihedral bound only): when
-  /// tets below min_dihedral_deg lie on well-shaped surface triangles, points are added inside
-  /// the regions next to them and TetGen runs again; the run with the largest minimum dihedral
-  /// angle is kept. 0 disables it.
-  int sliver_passes = 2;
+  /// Extra TetGen runs against the slivers TetGen leaves next to a kept surface (kept surface and
+  /// a dihedral bound only): points are added inside the regions next to the tets below
+  /// min_dihedral_deg and TetGen runs again, as long as the smallest dihedral angle rises (see
+  /// tetrahedralize()). 0 disables them.
+  int sliver_passes = 4;
   /// TetGen runs with different facet orders when one crashes (a failed assertion), fails
   /// with an internal error or, under Y, splits surface triangles: TetGen 1.5 recovers edges in
   /// facet order and some orders avoid its weaknesses (see tetrahedralize()).
@@ -40,10 +53,40 @@ struct TetmeshOptions {
 };
 
 /// The TetGen switch string for `options`: `p` (PLC), `q<ratio>/<angle>` (when the ratio is
-/// > 0; `/<angle>` when the angle is > 0), `a<volume>` (when > 0), `A` (region attributes),
-/// `Y` (keep_surface), `J` (no jettison: PLC points keep their numbers in the output) and, when
-/// `quiet`, `Q`. E.g. the defaults give "pq1.5/10AYJQ".
+/// > 0; `/<angle>` when the angle is > 0), `a<volume>` (when > 0), `o/<angle>` (when
+/// optimisation_threshold() > 0), `A` (region attributes), `Y` (keep_surface), `J` (no jettison:
+/// PLC points keep their numbers in the output) and, when `quiet`, `Q`. E.g. the defaults give
+/// "pq1.5/10o/150AYJQ".
 std::string tetgen_switches(const TetmeshOptions& options, bool quiet = true);
+
+/// The sliver threshold TetGen's optimisation gets: options.sliver_max_dihedral_deg with quality
+/// refinement and no volume bound, else 0 (TetGen's own).
+double optimisation_threshold(const TetmeshOptions& options);
+
+/// The tets of a mesh below a dihedral bound, by what holds them there. The groups are tried in
+/// this order and each tet counted once.
+struct SliverCensus {
+  struct Group {
+    long tets = 0;
+    double min_dihedral_deg = 180.0;  // 180 when empty
+  };
+  double bound_deg = 0.0;
+  /// Two faces on surfaces that meet at an angle below the bound (a thin wedge between two
+  /// surfaces, or a sharp fold of one): every mesh keeping those triangles holds a tet with that
+  /// angle or less. Fixed only by changing the surfaces.
+  Group wedge;
+  /// A vertex on a surface triangle whose smallest angle is below the bound (a needle).
+  Group needle;
+  /// Another vertex on a surface.
+  Group surface;
+  /// All four vertices inside regions.
+  Group interior;
+  long total() const { return wedge.tets + needle.tets + surface.tets + interior.tets; }
+};
+
+/// Counts the tets of `mesh` below `bound_deg` by group (see SliverCensus); mesh.triangles are
+/// the surfaces.
+SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg);
 
 /// What a run did, beyond the mesh.
 struct TetmeshRun {
@@ -56,6 +99,9 @@ struct TetmeshRun {
   int attempts = 0;                       // TetGen runs before the sliver passes (facet orders)
   int sliver_passes = 0;                  // extra TetGen runs made against surface slivers
   int sliver_points = 0;                  // interior points added against them (kept mesh)
+  double surface_min_angle_deg = 180.0;   // smallest angle of the model's triangles
+  long surface_needles = 0;               // model triangles sharper than 1°
+  SliverCensus slivers;                   // tets left below min_dihedral_deg (none counted when 0)
   double plc_seconds = 0.0;               // building the PLC (region points included)
   double tetgen_seconds = 0.0;            // all runs
   std::string tetgen_output;              // what TetGen printed (captured) for the kept mesh
@@ -73,6 +119,20 @@ struct TetmeshRun {
 /// TetGen runs in a child process (see run_tetgen()): a TetGen crash is a MesherError, not the
 /// end of the program. When it crashes, fails with an internal error or splits triangles under
 /// Y, it runs again with the facets reversed, then shuffled (options.attempts runs in all).
+///
+/// Slivers: TetGen's optimisation works on tets whose largest dihedral angle exceeds
+/// options.sliver_max_dihedral_deg (see there). Under Y, TetGen inserts no point inside the
+/// diametral ball of a kept surface triangle, so slivers next to a surface can stay; the
+/// sliver passes then add interior points next to the tets below min_dihedral_deg and run TetGen
+/// again, as long as a pass raises the smallest dihedral angle (up to options.sliver_passes):
+/// points moved into the region from tets lying on well-shaped surface triangles, and
+/// off-centres of the short edges of tets with no face on a surface (repeated passes grade the
+/// mesh from small features of the surfaces). They stop when the worst tet lies in a wedge
+/// between two surfaces (two of its faces on surfaces meeting below the bound: no mesh keeping
+/// them does better). TetmeshRun::slivers then tells what holds the tets left below the bound.
+/// Needle-filled surfaces (more than 0.2 % of the triangles sharper than 1°: raw inputs) get
+/// neither the sliver threshold nor the passes: their minimum stays 0° and both would cost 3–4
+/// times the TetGen time; run.switches shows what TetGen got.
 ///
 /// Guarantees: every tet has a region (TetGen 1.5 sometimes leaves a few tets without a region
 /// attribute, next to Steiner points it added while recovering the surfaces; they get the

@@ -28,7 +28,8 @@ struct SharedCase {
   /// Radius-edge bound of the run. The raw inputs' needle triangles make TetGen's refinement
   /// slow under Y (A2, A4, A6: 5-10 s in refinement alone) without improving them, so those
   /// are tested without refinement (`pAYJQ`) to keep the suite fast; the small ones with the
-  /// defaults (`pq1.5/10AYJQ`). Figures with the defaults for all: see the tetmesh report.
+  /// defaults (`pq1.5/10AYJQ` for the needle-filled ones, see tetrahedralize();
+  /// geomodel3d_only gets `o/150`). Figures with the defaults for all: see the tetmesh report.
   double radius_edge_ratio = TetmeshOptions{}.radius_edge_ratio;
   /// TetGen attempts (facet orders). modelA2's split is the same in every order tried (the
   /// reversed one and most shuffles crash), so one attempt keeps its test short; modelA4 needs

@@ -24,7 +24,7 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
   module.run(context, Parameters(module.parameters(), {{"quality", "1.4"}}));
   ASSERT_TRUE(context.volume);
   const auto& report = context.report.at("tetmesh");
-  EXPECT_EQ(report.at("switches"), "pq1.4/10AYJQ");
+  EXPECT_EQ(report.at("switches"), "pq1.4/10o/150AYJQ");
   EXPECT_EQ(report.at("tets").get<long>(), static_cast<long>(context.volume->tets.size()));
   EXPECT_EQ(report.at("regions_meshed"), 2);
   EXPECT_EQ(report.at("nonconforming_triangles"), 0);
