@@ -14,6 +14,7 @@ const char* to_string(FeatureMerge::Reason reason) {
     case FeatureMerge::CornersInOneCell: return "corners linked by a contact inside one cell";
     case FeatureMerge::ManyContactPoints: return "cell component touching more than two contact pieces";
     case FeatureMerge::CloseFeatures: return "features closer than the minimum feature size";
+    case FeatureMerge::Repair: return "features closer than the resolution merged to resolve a crossing";
   }
   return "?";
 }
@@ -35,6 +36,7 @@ struct BoundaryEdge {
   double length = 0.0;
   int rep_start = -1;      // output point of the component on the first half of the edge
   int rep_end = -1;        // ... and on the second half (differs on a split edge)
+  int corner = -1;         // its polygon vertex index in the diagram (the edge starts there)
 };
 
 // A connected component of one seed's restriction to the contacts.
@@ -80,10 +82,35 @@ class MeshBuilder {
     place_points();
     merge_points();
     assign_representatives();
-    remove_contact_slivers();
+    if (options_.merge_contact_slivers) remove_contact_slivers();
     emit_polygons();
+    if (getenv("BUILD_DEBUG_CORNER")) debug_corner(atoi(getenv("BUILD_DEBUG_CORNER")));
     assemble();
     return std::move(result_);
+  }
+
+  void debug_corner(int corner) {
+    for (int s = 0; s < rvd_.num_seeds(); ++s)
+      for (int k = rvd_.seed_corners[s]; k < rvd_.seed_corners[s + 1]; ++k)
+        if (rvd_.corners[k] == corner) {
+          fprintf(stderr, "corner %d in seed %d\n", corner, s);
+          for (size_t b = 0; b < contact_components_.size(); ++b) {
+            const ContactComponent& bc = contact_components_[b];
+            if (bc.seed != s) continue;
+            fprintf(stderr, "  BC %zu contact %d length %.1f corners:", b, bc.contact, bc.length);
+            for (int c : bc.corners) fprintf(stderr, " %d", c);
+            fprintf(stderr, " point %d (root %d feature %d/%d)\n", bc.point, find(bc.point), points_[find(bc.point)].feature.kind, points_[find(bc.point)].feature.id);
+          }
+          for (size_t c = 0; c < components_.size(); ++c) {
+            const CellComponent& cc = components_[c];
+            if (cc.seed != s) continue;
+            fprintf(stderr, "  CC %zu part %s area %.0f BCs:", c, input_.parts[cc.part].name.c_str(), cc.area);
+            for (int b : cc.contact_components) fprintf(stderr, " %d", b);
+            fprintf(stderr, " point %d\n   cycle:", cc.point);
+            for (int e : cc.boundary) fprintf(stderr, " [%d>%d n%d k%d r%d/%d]", edges_[e].from, edges_[e].to, edges_[e].neighbour, edges_[e].contact, edges_[e].rep_start, edges_[e].rep_end);
+            fprintf(stderr, "\n");
+          }
+        }
   }
 
  private:
@@ -135,6 +162,8 @@ class MeshBuilder {
 
   // ---- connected components of the restricted cells, and their boundaries ----
   void collect_cell_components() {
+    polygon_of_.assign(rvd_.vertex.size(), -1);
+    boundary_at_.assign(rvd_.vertex.size(), -1);
     int count = 0;
     const std::vector<int> component = restricted_cell_components(rvd_, &count);
     components_.resize(count);
@@ -152,13 +181,21 @@ class MeshBuilder {
       cc.area += area;
       cc.weighted += area * centroid;
       for (int k = 0; k < poly.size; ++k) {
-        const RvdEdgeTag& tag = rvd_.edge_tag[poly.first + k];
-        if (tag.on_input_edge() && !tag.on_line()) continue;  // glued inside the component
+        const int m = poly.first + k;
+        polygon_of_[m] = static_cast<int>(p);
+        const RvdEdgeTag& tag = rvd_.edge_tag[m];
         const int next = poly.first + (k + 1 == poly.size ? 0 : k + 1);
+        if (tag.on_input_edge() && !tag.on_line()) {
+          // Glued inside the component to the same segment, reversed, in the next triangle.
+          if (gid_[m] != gid_[next]) glued_at_.emplace(key2(gid_[m], gid_[next]), m);
+          continue;
+        }
         BoundaryEdge e;
-        e.from = gid_[poly.first + k];
+        e.from = gid_[m];
         e.to = gid_[next];
         if (e.from == e.to) continue;  // a zero-length edge of a degenerate polygon
+        e.corner = m;
+        boundary_at_[m] = static_cast<int>(edges_.size());
         e.component = component[p];
         e.neighbour = tag.neighbour;
         e.contact = tag.contact;
@@ -312,13 +349,35 @@ class MeshBuilder {
   }
 
   // ---- which output point each component uses along each piece of its boundary ----
+
+  // Polygon vertex index after m in its polygon.
+  int next_corner(int m) const {
+    const RvdPolygon& poly = rvd_.polygons[polygon_of_[m]];
+    return m + 1 == poly.first + poly.size ? poly.first : m + 1;
+  }
+  // The boundary edge that follows boundary edge e around its component (the component on the
+  // left): turn around the end vertex through the polygons of the component, across the glued
+  // input edges, to the next boundary edge. Walking by vertex ids alone would be ambiguous where
+  // the boundary passes twice through one vertex (around the end of a contact inside a part).
+  int next_boundary(int e) const {
+    int k = next_corner(edges_[e].corner);
+    for (int guard = 0; guard < 4096; ++guard) {
+      if (boundary_at_[k] >= 0) return boundary_at_[k];
+      const int after = next_corner(k);
+      if (gid_[k] == gid_[after]) {  // a zero-length edge: go on in the same polygon
+        k = after;
+        continue;
+      }
+      auto twin = glued_at_.find(key2(gid_[after], gid_[k]));
+      if (twin == glued_at_.end()) return -1;
+      k = next_corner(twin->second);
+    }
+    return -1;
+  }
+
   void assign_representatives() {
-    std::unordered_map<int, std::vector<int>> outgoing;
-    std::vector<char> used;
+    std::vector<char> taken(edges_.size(), 0);
     for (CellComponent& cc : components_) {
-      outgoing.clear();
-      for (int e : cc.boundary) outgoing[edges_[e].from].push_back(e);
-      std::unordered_map<int, char> taken;
       for (int start : cc.boundary) {
         if (taken[start]) continue;
         // Walk one boundary cycle.
@@ -327,16 +386,9 @@ class MeshBuilder {
         while (e >= 0 && !taken[e]) {
           taken[e] = 1;
           cycle.push_back(e);
-          int next = -1;
-          auto it = outgoing.find(edges_[e].to);
-          if (it != outgoing.end())
-            for (int f : it->second)
-              if (!taken[f]) {
-                next = f;
-                break;
-              }
-          e = next;
+          e = next_boundary(e);
         }
+        if (e != start) ++result_.open_boundaries;
         assign_cycle(cc, cycle);
       }
     }
@@ -621,6 +673,9 @@ class MeshBuilder {
   std::vector<CellComponent> components_;
   std::vector<BoundaryEdge> edges_;
   std::unordered_map<std::uint64_t, int> edge_at_;                // (from, to) -> bisector edge
+  std::unordered_map<std::uint64_t, int> glued_at_;               // (from, to) -> glued polygon edge
+  std::vector<int> polygon_of_;                                   // polygon of each polygon vertex
+  std::vector<int> boundary_at_;                                  // boundary edge starting there
   std::vector<ContactComponent> contact_components_;
   std::unordered_map<std::uint64_t, int> contact_component_at_;  // (seed, vertex) -> BC
   std::unordered_map<std::uint64_t, int> junction_rep_;          // (seed, vertex) -> point

@@ -36,6 +36,7 @@ struct FeatureMerge {
     CornersInOneCell,          // corners linked by a contact inside one cell (Fig. 11b)
     ManyContactPoints,         // a cell component touching more than two contact pieces (Fig. 11a)
     CloseFeatures,             // features of one cell closer than the minimum feature size (Fig. 11c-d)
+    Repair,                    // features closer than the resolution merged to undo a crossing or a leak
   };
   Reason reason;
   int seed = -1;
@@ -57,6 +58,11 @@ struct MeshBuildOptions {
   /// edge length of the remesh (a negative value keeps it off).
   double sharp_scale = 0.0;
   double sharp_angle_deg = 50.0;
+  /// Merge, while building, the middle point of the flat triangles a restricted Voronoi vertex
+  /// next to a contact gives (see remove_contact_slivers). Off by default: the merge cannot
+  /// check that the surfaces stay manifold; the clean-up collapses those triangles instead,
+  /// with the link condition and the validity checks of every edit.
+  bool merge_contact_slivers = false;
 };
 
 /// Mean edge length of a remesh with `seeds` seeds over `area`: the h for which
@@ -74,6 +80,7 @@ struct MeshBuildResult {
   int contact_slivers_removed = 0;  // contact points merged away (slivers along contacts)
   int sharp_points = 0;             // contact points held at sharp bends
   int inconsistencies = 0;          // junctions whose neighbours could not be matched (expect 0)
+  int open_boundaries = 0;          // component boundaries that did not close (expect 0)
 };
 
 /// Builds the output surfaces from the restricted Voronoi diagram of optimised seeds.

@@ -1,11 +1,15 @@
 #include "modules/remesh/mesh_cleanup.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <map>
-#include <unordered_set>
+#include <tuple>
+#include <unordered_map>
 
 #include "framework/geometry/self_intersections.h"
+#include "framework/geometry/surface_distance.h"
 #include "framework/geometry/triangle_quality.h"
 #include "framework/model/triangle_topology.h"
 
@@ -17,22 +21,110 @@ double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) { return measu
 
 Vec3 normal_of(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
 
-// The surface with vertex -> triangle incidence, edited in place; dead triangles are removed at
-// the end.
+// What makes the remeshed surfaces invalid as a structural model, counted around a few
+// triangles. Every edit of the clean-up is checked against it (see Editor::accept): an edit that
+// makes it worse is undone, so the clean-up never opens a sealed surface, never changes which
+// input region lies on which side of a triangle, and never makes triangles cross.
+struct Violations {
+  int holes = 0;       // edges with one triangle on a part that must not end there
+  int leaks = 0;       // edges where a wedge between consecutive triangles (radial order) has
+                       // different input regions on its two sides, or two triangles of one part
+                       // disagree in orientation: the output regions would not be the input's
+  int crossings = 0;   // pairs of triangles that intersect (exact predicates)
+  int degenerate = 0;  // triangles with collinear vertices
+  int pinches = 0;     // extra fans of a part around a vertex (the part touches itself there)
+  int total() const { return holes + leaks + crossings + degenerate + pinches; }
+};
+
+// Uniform grid of triangle bounding boxes: the candidates of the local intersection tests.
+// Entries are only added; a triangle that moved is inserted again and stale entries are
+// filtered by the caller (alive, actual bounding boxes).
+class TriangleGrid {
+ public:
+  void reset(double cell) {
+    inv_ = cell > 0 ? 1.0 / cell : 1.0;
+    cells_.clear();
+    big_.clear();
+  }
+  void insert(int t, const Vec3& lo, const Vec3& hi) {
+    if (cell_count(lo, hi) > kMaxCells) {
+      big_.push_back(t);
+      return;
+    }
+    for_cells(lo, hi, [&](std::uint64_t k) { cells_[k].push_back(t); });
+  }
+  template <class F>
+  void query(const Vec3& lo, const Vec3& hi, F&& f) const {
+    for (int t : big_) f(t);
+    if (cell_count(lo, hi) > kMaxCells) {
+      for (const auto& [k, list] : cells_)
+        for (int t : list) f(t);
+      return;
+    }
+    for_cells(lo, hi, [&](std::uint64_t k) {
+      auto it = cells_.find(k);
+      if (it != cells_.end())
+        for (int t : it->second) f(t);
+    });
+  }
+
+ private:
+  static constexpr double kMaxCells = 512;
+  long index(double x) const { return static_cast<long>(std::floor(x * inv_)); }
+  double cell_count(const Vec3& lo, const Vec3& hi) const {
+    double n = 1;
+    for (int d = 0; d < 3; ++d) n *= static_cast<double>(index(hi[d]) - index(lo[d]) + 1);
+    return n;
+  }
+  template <class F>
+  void for_cells(const Vec3& lo, const Vec3& hi, F&& f) const {
+    const long x0 = index(lo.x()), x1 = index(hi.x()), y0 = index(lo.y()), y1 = index(hi.y()), z0 = index(lo.z()),
+               z1 = index(hi.z());
+    for (long x = x0; x <= x1; ++x)
+      for (long y = y0; y <= y1; ++y)
+        for (long z = z0; z <= z1; ++z)
+          f((static_cast<std::uint64_t>(x & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
+            static_cast<std::uint64_t>(z & 0x1FFFFF));
+  }
+  double inv_ = 1.0;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+  std::vector<int> big_;
+};
+
+// The surface with vertex -> triangle incidence, edited in place. Edits happen inside
+// transactions (begin / commit / rollback) so that an edit can be tried, measured and undone.
+// Dead triangles are removed at the end (finish()).
 class Editor {
  public:
-  Editor(RemeshedSurface& s, const StructuralModel& input) : s_(s), input_(input) {
+  Editor(RemeshedSurface& s, const StructuralModel& input)
+      : s_(s), input_(input), part_regions_(input.part_regions()) {
     around_.resize(s.vertices.size());
+    dirty_.assign(s.vertices.size(), 1);
     dead_.assign(s.triangles.size(), 0);
     for (size_t t = 0; t < s.triangles.size(); ++t)
       for (int v : s.triangles[t]) around_[v].push_back(static_cast<int>(t));
+    double sum = 0;
+    long n = 0;
+    for (const Triangle& f : s.triangles)
+      for (int i = 0; i < 3; ++i) {
+        sum += (s.vertices[f[i]] - s.vertices[f[(i + 1) % 3]]).norm();
+        ++n;
+      }
+    mean_edge_ = n > 0 ? sum / n : 1.0;
+    rebuild_grid();
   }
 
   RemeshedSurface& s_;
   const StructuralModel& input_;
-  std::vector<std::vector<int>> around_;
+  std::vector<std::pair<int, int>> part_regions_;
+  std::vector<std::vector<int>> around_;  // may hold stale entries: read through star()
+  std::vector<char> dirty_;               // around_[v] may hold stale entries
   std::vector<char> dead_;
+  double mean_edge_ = 1.0;
+  const SurfaceProjector* projector_ = nullptr;  // for flips across folds (see try_flip)
+  double tolerance_ = 0.0;                       // the fidelity tolerance
 
+  // ---- geometry ----
   const Vec3& p(int v) const { return s_.vertices[v]; }
   Vec3 normal(int t) const {
     const Triangle& f = s_.triangles[t];
@@ -42,59 +134,142 @@ class Editor {
     const Triangle& f = s_.triangles[t];
     return min_angle_deg(p(f[0]), p(f[1]), p(f[2]));
   }
-
-  // Alive triangles containing edge (u, v).
-  void edge_triangles(int u, int v, std::vector<int>& out) const {
-    out.clear();
-    for (int t : around_[u]) {
-      if (dead_[t]) continue;
-      const Triangle& f = s_.triangles[t];
-      if (f[0] == v || f[1] == v || f[2] == v) out.push_back(t);
-    }
-  }
-  bool edge_exists(int u, int v) const {
-    for (int t : around_[u]) {
-      if (dead_[t]) continue;
-      const Triangle& f = s_.triangles[t];
-      if (f[0] == v || f[1] == v || f[2] == v) return true;
-    }
-    return false;
-  }
+  bool alive(int t) const { return !dead_[t]; }
+  static bool has(const Triangle& f, int v) { return f[0] == v || f[1] == v || f[2] == v; }
   static int opposite(const Triangle& f, int u, int v) {
     for (int w : f)
       if (w != u && w != v) return w;
     return -1;
   }
+
+  // ---- incidence ----
+  // Alive triangles with vertex v (the list is tidied first).
+  const std::vector<int>& star(int v) {
+    auto& list = around_[v];
+    if (!dirty_[v]) return list;
+    dirty_[v] = 0;
+    list.erase(std::remove_if(list.begin(), list.end(),
+                              [&](int t) { return dead_[t] != 0 || !has(s_.triangles[t], v); }),
+               list.end());
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    return list;
+  }
+  // Alive triangles containing edge (u, v).
+  void edge_triangles(int u, int v, std::vector<int>& out) {
+    out.clear();
+    for (int t : star(u))
+      if (has(s_.triangles[t], v)) out.push_back(t);
+  }
+  bool edge_exists(int u, int v) {
+    for (int t : star(u))
+      if (has(s_.triangles[t], v)) return true;
+    return false;
+  }
   // A contact edge of the output: not exactly two triangles, or two of different parts.
-  bool is_line_edge(int u, int v) const {
+  bool is_line_edge(int u, int v) {
     std::vector<int> e;
     edge_triangles(u, v, e);
     return e.size() != 2 || s_.triangle_part[e[0]] != s_.triangle_part[e[1]];
   }
-  void neighbours(int v, std::vector<int>& out) const {
+  void neighbours(int v, std::vector<int>& out) {
     out.clear();
-    for (int t : around_[v]) {
-      if (dead_[t]) continue;
+    for (int t : star(v))
       for (int w : s_.triangles[t])
         if (w != v) out.push_back(w);
-    }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  // Union of the stars of `vertices`, sorted.
+  void stars(const std::vector<int>& vertices, std::vector<int>& out) {
+    out.clear();
+    for (int v : vertices)
+      for (int t : star(v)) out.push_back(t);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+
+  // ---- edits (journaled inside a transaction) ----
+  void begin() {
+    journal_.clear();
+    open_ = true;
+  }
+  void commit() {
+    journal_.clear();
+    open_ = false;
+  }
+  void rollback() {
+    for (auto it = journal_.rbegin(); it != journal_.rend(); ++it) {
+      switch (it->kind) {
+        case Change::Moved:
+          s_.vertices[it->index] = it->position;
+          for (int t : around_[it->index])
+            if (!dead_[t]) grid_insert(t);
+          break;
+        case Change::Changed:
+          s_.triangle_part[it->index] = it->part;
+          dead_[it->index] = it->dead;
+          for (int w : s_.triangles[it->index]) dirty_[w] = 1;  // the triangle it was
+          s_.triangles[it->index] = it->triangle;
+          for (int w : it->triangle) {
+            around_[w].push_back(it->index);
+            dirty_[w] = 1;
+          }
+          grid_insert(it->index);
+          break;
+        case Change::Added:
+          dead_[it->index] = 1;
+          for (int w : s_.triangles[it->index]) dirty_[w] = 1;
+          break;
+      }
+    }
+    journal_.clear();
+    open_ = false;
+  }
+  // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
+  void move(int v, const Vec3& x, bool update_grid = true) {
+    if (open_) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0});
+    s_.vertices[v] = x;
+    if (update_grid)
+      for (int t : star(v)) grid_insert(t);
+  }
+  void set_triangle(int t, const Triangle& f) {
+    save(t);
+    for (int w : s_.triangles[t]) dirty_[w] = 1;
+    s_.triangles[t] = f;
+    for (int w : f) {
+      around_[w].push_back(t);
+      dirty_[w] = 1;
+    }
+    grid_insert(t);
+  }
+  void kill(int t) {
+    save(t);
+    dead_[t] = 1;
+    for (int w : s_.triangles[t]) dirty_[w] = 1;
   }
   int add_triangle(const Triangle& f, int part) {
     const int t = static_cast<int>(s_.triangles.size());
     s_.triangles.push_back(f);
     s_.triangle_part.push_back(part);
     dead_.push_back(0);
-    for (int v : f) around_[v].push_back(t);
+    for (int v : f) {
+      around_[v].push_back(t);
+      dirty_[v] = 1;
+    }
+    if (open_) journal_.push_back({Change::Added, t, Vec3::Zero(), f, part, 0});
+    grid_insert(t);
     return t;
   }
-  void kill(int t) { dead_[t] = 1; }
-  // Removes dead triangles from the incidence lists of these vertices.
-  void tidy(int v) {
-    auto& list = around_[v];
-    list.erase(std::remove_if(list.begin(), list.end(), [&](int t) { return dead_[t] != 0; }), list.end());
+  // Vertices are never removed while editing (unused ones go at finish()).
+  int add_vertex(const Vec3& x, const VertexFeature& feature) {
+    s_.vertices.push_back(x);
+    s_.features.push_back(feature);
+    around_.emplace_back();
+    dirty_.push_back(0);
+    return static_cast<int>(s_.vertices.size()) - 1;
   }
+
   void finish() {
     std::vector<Triangle> tris;
     std::vector<int> part;
@@ -112,16 +287,426 @@ class Editor {
     const auto& c = input_.contacts[contact].corners;
     return c[0] == corner || c[1] == corner;
   }
+
+  // ---- validity ----
+  void rebuild_grid() {
+    grid_.reset(2.0 * mean_edge_);
+    for (size_t t = 0; t < s_.triangles.size(); ++t)
+      if (!dead_[t]) grid_insert(static_cast<int>(t));
+  }
+
+  // Violations on the edges of `triangles` and between `triangles` and any other triangle.
+  Violations violations(const std::vector<int>& triangles) {
+    Violations out;
+    ++epoch_;
+    if (mark_.size() < s_.triangles.size()) mark_.resize(s_.triangles.size() + 1024, 0);
+    for (int t : triangles) mark_[t] = epoch_;
+    edges_.clear();
+    for (int t : triangles) {
+      const Triangle& f = s_.triangles[t];
+      for (int i = 0; i < 3; ++i) edges_.emplace_back(std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3]));
+    }
+    std::sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+    for (const auto& [a, b] : edges_) edge_violations(a, b, out);
+    verts_.clear();
+    for (int t : triangles) verts_.insert(verts_.end(), s_.triangles[t].begin(), s_.triangles[t].end());
+    std::sort(verts_.begin(), verts_.end());
+    verts_.erase(std::unique(verts_.begin(), verts_.end()), verts_.end());
+    for (int v : verts_) out.pinches += pinches(v);
+    for (int t : triangles) {
+      if (degenerate(t)) {
+        ++out.degenerate;
+        continue;
+      }
+      Vec3 lo, hi;
+      box(t, lo, hi);
+      ++query_epoch_;
+      if (seen_.size() < s_.triangles.size()) seen_.resize(s_.triangles.size() + 1024, 0);
+      grid_.query(lo, hi, [&](int c) {
+        if (c == t || dead_[c] || seen_[c] == query_epoch_) return;
+        seen_[c] = query_epoch_;
+        if (mark_[c] == epoch_ && c < t) return;  // counted from c
+        Vec3 clo, chi;
+        box(c, clo, chi);
+        if ((clo.array() > hi.array()).any() || (chi.array() < lo.array()).any()) return;
+        if (degenerate(c)) return;
+        if (!adjacent_apart(t, c) && triangles_intersect(s_.vertices, s_.triangles[t], s_.triangles[c]))
+          ++out.crossings;
+      });
+    }
+    return out;
+  }
+
+  // An edit may keep its changes when it makes nothing worse (`strict`: when it repairs).
+  static bool acceptable(const Violations& before, const Violations& after, bool strict) {
+    if (after.holes > before.holes || after.leaks > before.leaks) return false;
+    return strict ? after.total() < before.total() : after.total() <= before.total();
+  }
+
+  // Every violation of the whole surface, listed (pairs and edges sorted), for the repair pass
+  // and for checking a batch of moves.
+  struct Census {
+    std::vector<std::pair<int, int>> crossings;  // triangle pairs
+    std::vector<std::pair<int, int>> edges;      // edges (a < b) with a hole or a leak
+    std::vector<int> degenerate;                 // triangles
+    std::vector<int> pinched;                    // vertices
+    Violations count;
+    // The triangles involved in any violation.
+    std::vector<int> triangles(Editor& e) const {
+      std::vector<int> out, tris;
+      for (const auto& [a, b] : crossings) out.insert(out.end(), {a, b});
+      for (const auto& [a, b] : edges) {
+        e.edge_triangles(a, b, tris);
+        out.insert(out.end(), tris.begin(), tris.end());
+      }
+      out.insert(out.end(), degenerate.begin(), degenerate.end());
+      for (int v : pinched)
+        for (int t : e.star(v)) out.push_back(t);
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      return out;
+    }
+  };
+  // `topology`: also the pinches (edits that move vertices only cannot change them).
+  Census census(bool topology = true) {
+    Census c;
+    std::vector<int> index;
+    std::vector<Triangle> tris;
+    for (size_t t = 0; t < s_.triangles.size(); ++t) {
+      if (dead_[t]) continue;
+      if (degenerate(static_cast<int>(t))) {
+        c.degenerate.push_back(static_cast<int>(t));
+        continue;
+      }
+      index.push_back(static_cast<int>(t));
+      tris.push_back(s_.triangles[t]);
+    }
+    c.crossings = crossing_pairs(index);
+    // Holes and leaks can only be on edges that are not two consistent triangles of one part.
+    std::vector<std::pair<std::pair<int, int>, int>> edges;
+    for (size_t t = 0; t < s_.triangles.size(); ++t) {
+      if (dead_[t]) continue;
+      const Triangle& f = s_.triangles[t];
+      for (int i = 0; i < 3; ++i)
+        edges.push_back({{std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])}, static_cast<int>(t)});
+    }
+    std::sort(edges.begin(), edges.end());
+    for (size_t i = 0; i < edges.size();) {
+      size_t j = i;
+      while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+      const auto [a, b] = edges[i].first;
+      const bool plain = j - i == 2 && s_.triangle_part[edges[i].second] == s_.triangle_part[edges[i + 1].second] &&
+                         has_directed_edge(s_.triangles[edges[i].second], a, b) !=
+                             has_directed_edge(s_.triangles[edges[i + 1].second], a, b);
+      if (!plain) {
+        Violations v;
+        edge_violations(a, b, v);
+        if (v.holes + v.leaks > 0) c.edges.push_back({a, b});
+        c.count.holes += v.holes;
+        c.count.leaks += v.leaks;
+      }
+      i = j;
+    }
+    c.count.crossings = static_cast<int>(c.crossings.size());
+    c.count.degenerate = static_cast<int>(c.degenerate.size());
+    for (size_t v = 0; topology && v < s_.vertices.size(); ++v) {
+      const int extra = pinches(static_cast<int>(v));
+      if (extra > 0) c.pinched.push_back(static_cast<int>(v));
+      c.count.pinches += extra;
+    }
+    return c;
+  }
+
+  // Alive triangles whose bounding box meets [lo, hi] (each once).
+  template <class F>
+  void candidates(const Vec3& lo, const Vec3& hi, F&& f) {
+    ++query_epoch_;
+    if (seen_.size() < s_.triangles.size()) seen_.resize(s_.triangles.size() + 1024, 0);
+    grid_.query(lo, hi, [&](int c) {
+      if (dead_[c] || seen_[c] == query_epoch_) return;
+      seen_[c] = query_epoch_;
+      Vec3 clo, chi;
+      box(c, clo, chi);
+      if ((clo.array() > hi.array()).any() || (chi.array() < lo.array()).any()) return;
+      f(c);
+    });
+  }
+
+  // Pairs (a < b) of the triangles `tris` (alive, not degenerate) that intersect. Candidates come
+  // from a uniform grid of their bounding boxes: a pair is tested in the one cell that holds the
+  // low corner of the overlap of their boxes. Cells are shared out between threads.
+  std::vector<std::pair<int, int>> crossing_pairs(const std::vector<int>& tris) {
+    const double inv = 1.0 / (2.0 * mean_edge_);
+    auto index = [&](double x) { return static_cast<long>(std::floor(x * inv)); };
+    auto key = [](long x, long y, long z) {
+      return (static_cast<std::uint64_t>(x & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
+             static_cast<std::uint64_t>(z & 0x1FFFFF);
+    };
+    const size_t n = tris.size();
+    std::vector<Vec3> lo(n), hi(n);
+    std::vector<std::pair<std::uint64_t, int>> entries;
+    std::vector<int> big;  // boxes over too many cells: tested against every triangle
+    entries.reserve(4 * n);
+    for (size_t i = 0; i < n; ++i) {
+      box(tris[i], lo[i], hi[i]);
+      const long x0 = index(lo[i].x()), x1 = index(hi[i].x()), y0 = index(lo[i].y()), y1 = index(hi[i].y()),
+                 z0 = index(lo[i].z()), z1 = index(hi[i].z());
+      if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > 64) {
+        big.push_back(static_cast<int>(i));
+        continue;
+      }
+      for (long x = x0; x <= x1; ++x)
+        for (long y = y0; y <= y1; ++y)
+          for (long z = z0; z <= z1; ++z) entries.emplace_back(key(x, y, z), static_cast<int>(i));
+    }
+    std::sort(entries.begin(), entries.end());
+    std::vector<size_t> starts;
+    for (size_t k = 0; k < entries.size(); ++k)
+      if (k == 0 || entries[k].first != entries[k - 1].first) starts.push_back(k);
+    starts.push_back(entries.size());
+    auto overlap = [&](size_t i, size_t j) {
+      return !((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any());
+    };
+    auto test = [&](size_t i, size_t j) {
+      const int a = tris[i], b = tris[j];
+      return !adjacent_apart(a, b) && triangles_intersect(s_.vertices, s_.triangles[a], s_.triangles[b]);
+    };
+    std::vector<std::pair<int, int>> found;
+    const long cells = static_cast<long>(starts.size()) - 1;
+#pragma omp parallel
+    {
+      std::vector<std::pair<int, int>> mine;
+#pragma omp for schedule(dynamic, 64) nowait
+      for (long cidx = 0; cidx < cells; ++cidx) {
+        const std::uint64_t here = entries[starts[cidx]].first;
+        for (size_t p = starts[cidx]; p < starts[cidx + 1]; ++p)
+          for (size_t q = p + 1; q < starts[cidx + 1]; ++q) {
+            const size_t i = entries[p].second, j = entries[q].second;
+            if (!overlap(i, j)) continue;
+            const Vec3 corner = lo[i].cwiseMax(lo[j]);
+            if (key(index(corner.x()), index(corner.y()), index(corner.z())) != here) continue;
+            if (test(i, j)) mine.emplace_back(std::min(tris[i], tris[j]), std::max(tris[i], tris[j]));
+          }
+      }
+#pragma omp for schedule(dynamic, 1) nowait
+      for (long bi = 0; bi < static_cast<long>(big.size()); ++bi) {
+        const size_t i = big[bi];
+        for (size_t j = 0; j < n; ++j) {
+          if (j == i || !overlap(i, j)) continue;
+          // A pair of two big boxes is tested from the lower one only.
+          if (std::binary_search(big.begin(), big.end(), static_cast<int>(j)) && j < i) continue;
+          if (test(i, j)) mine.emplace_back(std::min(tris[i], tris[j]), std::max(tris[i], tris[j]));
+        }
+      }
+#pragma omp critical
+      found.insert(found.end(), mine.begin(), mine.end());
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+
+  // Holes and leaks on one edge.
+  Violations edge_check(int a, int b) {
+    Violations v;
+    edge_violations(a, b, v);
+    return v;
+  }
+
+  bool may_end(int part) const {
+    const auto [plus, minus] = part_regions_[part];
+    return plus == minus || plus < -1 || minus < -1;
+  }
+
+ private:
+  struct Change {
+    enum Kind { Moved, Changed, Added };
+    Kind kind;
+    int index;
+    Vec3 position;
+    Triangle triangle;
+    int part;
+    char dead;
+  };
+  void save(int t) {
+    if (open_) journal_.push_back({Change::Changed, t, Vec3::Zero(), s_.triangles[t], s_.triangle_part[t], dead_[t]});
+  }
+  void box(int t, Vec3& lo, Vec3& hi) const {
+    const Triangle& f = s_.triangles[t];
+    lo = p(f[0]).cwiseMin(p(f[1])).cwiseMin(p(f[2]));
+    hi = p(f[0]).cwiseMax(p(f[1])).cwiseMax(p(f[2]));
+  }
+  void grid_insert(int t) {
+    Vec3 lo, hi;
+    box(t, lo, hi);
+    grid_.insert(t, lo, hi);
+  }
+  bool degenerate(int t) const { return is_degenerate(s_.vertices, s_.triangles[t]); }
+  // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
+  // vertices on the same side). With opposite directions along the edge (consistent
+  // orientation) and normals clearly on the same side they cannot: a cheap answer for the
+  // commonest pair, whose exact test is slow on flat parts (exactly coplanar triangles).
+  bool adjacent_apart(int t, int c) const {
+    const Triangle &a = s_.triangles[t], &b = s_.triangles[c];
+    int shared = 0, u = -1, v = -1;
+    for (int i = 0; i < 3; ++i)
+      if (has(b, a[i])) {
+        ++shared;
+        (u < 0 ? u : v) = a[i];
+      }
+    if (shared != 2) return false;
+    if (has_directed_edge(a, u, v) == has_directed_edge(b, u, v)) return false;
+    const Vec3 na = normal(t), nb = normal(c);
+    return na.dot(nb) > 0.01 * na.norm() * nb.norm();
+  }
+
+  // Extra fans around v: the triangles of one part around v, linked across the edges (v, w) that
+  // have exactly two triangles of that part, form one fan in a manifold part.
+  int pinches(int v) {
+    ring_ = star(v);
+    const int n = static_cast<int>(ring_.size());
+    if (n < 2) return 0;
+    std::vector<int> root(n);
+    for (int i = 0; i < n; ++i) root[i] = i;
+    auto find = [&](int i) {
+      while (root[i] != i) i = root[i] = root[root[i]];
+      return i;
+    };
+    int components = n;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        const int a = ring_[i], b = ring_[j];
+        if (s_.triangle_part[a] != s_.triangle_part[b]) continue;
+        int w = -1;
+        for (int x : s_.triangles[a])
+          if (x != v && has(s_.triangles[b], x)) w = x;
+        if (w < 0) continue;
+        int same = 0;
+        for (int t : ring_)
+          if (has(s_.triangles[t], w) && s_.triangle_part[t] == s_.triangle_part[a]) ++same;
+        if (same != 2) continue;
+        const int ra = find(i), rb = find(j);
+        if (ra != rb) {
+          root[ra] = rb;
+          --components;
+        }
+      }
+    // One fan per part is expected.
+    std::vector<int> parts;
+    for (int t : ring_) parts.push_back(s_.triangle_part[t]);
+    std::sort(parts.begin(), parts.end());
+    const int distinct = static_cast<int>(std::unique(parts.begin(), parts.end()) - parts.begin());
+    return components - distinct;
+  }
+
+  // Holes and leaks on edge (a, b), see Violations.
+  void edge_violations(int a, int b, Violations& out) {
+    edge_triangles(a, b, fan_tris_);
+    const size_t k = fan_tris_.size();
+    if (k == 0) return;
+    if (k == 1) {
+      if (!may_end(s_.triangle_part[fan_tris_[0]])) ++out.holes;
+      return;
+    }
+    const int t0 = fan_tris_[0], t1 = fan_tris_[1];
+    if (k == 2 && s_.triangle_part[t0] == s_.triangle_part[t1]) {
+      if (has_directed_edge(s_.triangles[t0], a, b) == has_directed_edge(s_.triangles[t1], a, b)) ++out.leaks;
+      return;
+    }
+    // Radial order of the triangles around the edge.
+    const Vec3 axis = p(b) - p(a);
+    if (axis.squaredNorm() == 0) return;  // the triangles are degenerate, counted there
+    const Vec3 n = axis.normalized();
+    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    const Vec3 u = n.cross(helper).normalized();
+    const Vec3 v = n.cross(u);
+    fan_.clear();
+    for (int t : fan_tris_) {
+      const Triangle& f = s_.triangles[t];
+      Vec3 w = p(opposite(f, a, b)) - p(a);
+      w -= w.dot(n) * n;
+      if (w.squaredNorm() == 0) return;  // degenerate, counted there
+      fan_.push_back({std::atan2(w.dot(v), w.dot(u)), t, has_directed_edge(f, a, b)});
+    }
+    std::sort(fan_.begin(), fan_.end(), [](const Blade& x, const Blade& y) { return x.angle < y.angle; });
+    for (size_t i = 0; i < k; ++i) {
+      const Blade& lo = fan_[i];
+      const Blade& hi = fan_[(i + 1) % k];
+      const auto& rl = part_regions_[s_.triangle_part[lo.triangle]];
+      const auto& rh = part_regions_[s_.triangle_part[hi.triangle]];
+      // The side of `lo` facing increasing angles, the side of `hi` facing decreasing ones.
+      const int region_lo = lo.forward ? rl.first : rl.second;
+      const int region_hi = hi.forward ? rh.second : rh.first;
+      if (region_lo < -1 || region_hi < -1) continue;  // a model without regions
+      if (region_lo != region_hi) ++out.leaks;
+    }
+  }
+
+  struct Blade {
+    double angle;
+    int triangle;
+    bool forward;
+  };
+
+  std::vector<Change> journal_;
+  bool open_ = false;
+  TriangleGrid grid_;
+  std::vector<int> mark_, seen_;
+  int epoch_ = 0, query_epoch_ = 0;
+  std::vector<std::pair<int, int>> edges_;
+  std::vector<int> fan_tris_, verts_, ring_;
+  std::vector<Blade> fan_;
 };
+
+// Applies an edit as a transaction: `affected_before` gives the triangles whose violations the
+// edit may change (before it), `edit` performs it and returns the triangles affected after it
+// (or false to give up). The edit is kept when Editor::acceptable().
+//
+// The edit is measured first: when it leaves no violation around it is kept at once (nothing
+// can be worse than none), which spares measuring most edits twice; otherwise it is undone, the
+// surroundings measured as they were, and the edit done again if it is acceptable. Edits are
+// deterministic, so doing one again gives the same result.
+template <class Edit>
+bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, Edit&& edit) {
+  std::vector<int> affected_after;
+  e.begin();
+  if (!edit(affected_after)) {
+    e.rollback();
+    return false;
+  }
+  static const bool accept_all = getenv("ACCEPT_ALL") != nullptr;
+  if (accept_all && !strict) {
+    e.commit();
+    return true;
+  }
+  const Violations after = e.violations(affected_after);
+  if (after.total() == 0 && !strict) {
+    e.commit();
+    return true;
+  }
+  e.rollback();
+  const Violations before = e.violations(affected_before);
+  if (getenv("TX_DEBUG") && strict)
+    fprintf(stderr, "[tx] before h%d l%d c%d d%d p%d after h%d l%d c%d d%d p%d\n", before.holes, before.leaks,
+            before.crossings, before.degenerate, before.pinches, after.holes, after.leaks, after.crossings,
+            after.degenerate, after.pinches);
+  if (!Editor::acceptable(before, after, strict)) return false;
+  e.begin();
+  affected_after.clear();
+  edit(affected_after);
+  e.commit();
+  return true;
+}
 
 // Interior (surface) vertex with exactly three triangles of one part around it, closed fan.
 int remove_valence3(Editor& e) {
   int removed = 0;
-  std::vector<int> ring, tmp;
-  for (size_t v = 0; v < e.s_.vertices.size(); ++v) {
+  std::vector<int> tmp, before;
+  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+    const int v = static_cast<int>(vi);
     if (e.s_.features[v].kind != VertexFeature::Surface) continue;
-    e.tidy(static_cast<int>(v));
-    const auto& tris = e.around_[v];
+    const std::vector<int> tris = e.star(v);
     if (tris.size() != 3) continue;
     const int part = e.s_.triangle_part[tris[0]];
     if (e.s_.triangle_part[tris[1]] != part || e.s_.triangle_part[tris[2]] != part) continue;
@@ -129,7 +714,7 @@ int remove_valence3(Editor& e) {
     std::array<std::pair<int, int>, 3> fan;
     for (int i = 0; i < 3; ++i) {
       const Triangle& f = e.s_.triangles[tris[i]];
-      const int k = f[0] == static_cast<int>(v) ? 0 : f[1] == static_cast<int>(v) ? 1 : 2;
+      const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
       fan[i] = {f[(k + 1) % 3], f[(k + 2) % 3]};
     }
     const int a = fan[0].first, b = fan[0].second;
@@ -149,24 +734,28 @@ int remove_valence3(Editor& e) {
     for (int t : tmp)
       if (Editor::opposite(e.s_.triangles[t], a, b) == c) exists = true;
     if (exists || normal_of(e.p(a), e.p(b), e.p(c)).norm() == 0.0) continue;
-    for (int t : tris) e.kill(t);
-    e.add_triangle({a, b, c}, part);
-    e.tidy(static_cast<int>(v));
-    ++removed;
+    const bool done = transact(e, tris, false, [&](std::vector<int>& after) {
+      for (int t : tris) e.kill(t);
+      after = {e.add_triangle({a, b, c}, part)};
+      return true;
+    });
+    removed += done ? 1 : 0;
   }
   return removed;
 }
 
 // Collapse of u into v allowed by the features: a vertex only slides onto something at least as
 // constrained, along the feature it samples; or, closer than d_min (`merge_below`), a contact
-// vertex joins another contact or a corner, which merges the two features there.
-bool feature_allows_collapse(const Editor& e, int u, int v, double merge_below = 0.0) {
+// vertex joins another contact or a corner, which merges the two features there. A repair
+// (`repairing`) may also move a pinned contact point.
+bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, bool repairing = false) {
   const VertexFeature& fu = e.s_.features[u];
   const VertexFeature& fv = e.s_.features[v];
-  if (fu.pinned) return false;
+  if (fu.pinned && !repairing) return false;
   switch (fu.kind) {
     case VertexFeature::Corner:
-      return false;
+      // Corners closer than the resolution merge only to repair (paper Fig. 11b).
+      return repairing && fv.kind == VertexFeature::Corner && (e.p(u) - e.p(v)).norm() < merge_below;
     case VertexFeature::Contact:
       if (merge_below > 0.0 && fv.kind != VertexFeature::Surface && (e.p(u) - e.p(v)).norm() < merge_below &&
           !(fv.kind == VertexFeature::Contact && fv.id == fu.id))
@@ -176,19 +765,20 @@ bool feature_allows_collapse(const Editor& e, int u, int v, double merge_below =
       if (fv.kind == VertexFeature::Corner) return e.corner_ends_contact(fv.id, fu.id);
       return false;
     case VertexFeature::Surface: {
-      for (int t : e.around_[u])
-        if (!e.dead_[t] && e.s_.triangle_part[t] != fu.id) return false;
+      for (int t : e.star(u))
+        if (e.s_.triangle_part[t] != fu.id) return false;
       return true;
     }
   }
   return false;
 }
 
-// Collapses u into v when the features, the link condition and the geometry allow it. No
-// triangle may come out with a smallest angle below min(its angle before, `floor_deg`): a
-// collapse never turns good triangles into needles (which would let collapses cascade).
-bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0) {
-  if (!feature_allows_collapse(e, u, v, merge_below)) return false;
+// Whether u may collapse into v: the features allow it, the link condition holds and no
+// triangle folds over or becomes a sliver. No triangle may come out with a smallest angle below
+// min(its angle before, `floor_deg`): a collapse never turns good triangles into needles (which
+// would let collapses cascade).
+bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing) {
+  if (!feature_allows_collapse(e, u, v, merge_below, repairing)) return false;
   std::vector<int> edge, nu, nv;
   e.edge_triangles(u, v, edge);
   if (edge.empty()) return false;
@@ -204,10 +794,8 @@ bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floo
   // (Several triangles of the edge may share an apex: the slivers a contact gets in every part
   // along it when a restricted Voronoi vertex lies next to the contact.)
   if (common != apex) return false;
-  // No triangle may fold over, become a sliver, or duplicate a triangle of its part.
-  std::vector<int> existing;
-  for (int t : e.around_[u]) {
-    if (e.dead_[t] || std::find(edge.begin(), edge.end(), t) != edge.end()) continue;
+  for (int t : e.star(u)) {
+    if (std::find(edge.begin(), edge.end(), t) != edge.end()) continue;
     Triangle f = e.s_.triangles[t];
     const Vec3 before = e.normal(t);
     for (int& w : f)
@@ -215,27 +803,74 @@ bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floo
     const Vec3 after = normal_of(e.p(f[0]), e.p(f[1]), e.p(f[2]));
     if (after.dot(before) <= 0.5 * before.norm() * after.norm()) return false;
     const double after_angle = min_angle_deg(e.p(f[0]), e.p(f[1]), e.p(f[2]));
-    if (after_angle < 1.0 || after_angle < std::min(e.min_angle(t), floor_deg)) return false;
-    const int x = f[0] == v ? f[1] : f[0], y = f[0] == v || f[1] == v ? f[2] : f[1];
-    e.edge_triangles(v, x, existing);
-    for (int g : existing)
-      if (e.s_.triangle_part[g] == e.s_.triangle_part[t] && Editor::opposite(e.s_.triangles[g], v, x) == y) return false;
+    if ((!repairing && after_angle < 1.0) || after_angle < std::min(e.min_angle(t), floor_deg)) return false;
   }
-  for (int t : edge) e.kill(t);
-  for (int t : e.around_[u]) {
-    if (e.dead_[t]) continue;
-    for (int& w : e.s_.triangles[t])
-      if (w == u) w = v;
-    e.around_[v].push_back(t);
-  }
-  e.around_[u].clear();
-  for (int w : apex) e.tidy(w);
-  e.tidy(v);
   return true;
 }
 
+// The collapse itself: the triangles of edge (u, v) go, u becomes v in the others.
+void collapse(Editor& e, int u, int v) {
+  std::vector<int> edge;
+  e.edge_triangles(u, v, edge);
+  for (int t : edge) e.kill(t);
+  for (int t : std::vector<int>(e.star(u))) {
+    Triangle f = e.s_.triangles[t];
+    for (int& w : f)
+      if (w == u) w = v;
+    e.set_triangle(t, f);
+  }
+}
+
+// The contact both u and v sample (a contact vertex's contact, or the one a corner ends that the
+// other vertex lies on), -1 when none.
+int shared_contact(const Editor& e, int u, int v) {
+  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact) return fu.id == fv.id ? fu.id : -1;
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner)
+    return e.corner_ends_contact(fv.id, fu.id) ? fu.id : -1;
+  if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner)
+    return e.corner_ends_contact(fu.id, fv.id) ? fv.id : -1;
+  if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) {
+    for (int c : e.input_.corners[fu.id].contacts)
+      if (e.corner_ends_contact(fv.id, c)) return c;
+  }
+  return -1;
+}
+
+// Splits edge (u, v) at vertex w in every triangle that has it, keeping orientations; the new
+// triangles are appended to `added`.
+void split(Editor& e, int u, int v, int w, std::vector<int>* added = nullptr) {
+  std::vector<int> tris;
+  e.edge_triangles(u, v, tris);
+  for (int t : tris) {
+    const Triangle f = e.s_.triangles[t];
+    const int part = e.s_.triangle_part[t];
+    int k = 0;
+    while (!((f[k] == u && f[(k + 1) % 3] == v) || (f[k] == v && f[(k + 1) % 3] == u))) ++k;
+    const int a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
+    e.kill(t);
+    const int t1 = e.add_triangle({a, w, c}, part), t2 = e.add_triangle({w, b, c}, part);
+    if (added) added->insert(added->end(), {t1, t2});
+  }
+}
+
+// Collapses u into v when collapse_allowed() and the validity of the surface gets no worse
+// (`strict`: better).
+bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0, bool strict = false) {
+  if (!collapse_allowed(e, u, v, merge_below, floor_deg, strict)) return false;
+  std::vector<int> affected;
+  e.stars({u, v}, affected);
+  return transact(e, affected, strict, [&](std::vector<int>& after) {
+    collapse(e, u, v);
+    after = e.star(v);
+    return true;
+  });
+}
+
 // A triangle whose three vertices sample one contact: a fold along the contact, made where a
-// restricted Voronoi vertex lies next to the contact. It is removed whatever its angles.
+// restricted Voronoi vertex lies next to the contact (paper §3.3: "the dual is also a
+// degenerated triangle"). It is removed whatever its angles, by collapsing one of its edges along
+// the contact in every part at once, which keeps the contact sealed.
 bool on_one_contact(const Editor& e, const Triangle& f) {
   int contact = -1;
   for (int v : f)
@@ -250,42 +885,183 @@ bool on_one_contact(const Editor& e, const Triangle& f) {
   return true;
 }
 
-// Thin strips between close contacts (a small fault throw): their edges across the strip,
-// shorter than d_min, are collapsed so that the two contacts merge there (paper Fig. 11c-d).
-void merge_close_features(Editor& e, double min_feature, CleanupReport& report) {
+// Features closer than d_min merge (paper Fig. 11c-d), which removes small fault throws and
+// joins fault tips to the contact next to them:
+//  - a "rung", an edge shorter than d_min between two features (contacts, corners), collapses;
+//  - a strip triangle, whose base is an edge of one contact and whose apex samples another feature
+//    closer than d_min to the base, is zipped: the base is split at the foot of the apex and the
+//    foot collapsed into the apex, so that the two contacts run together there.
+// A thin strip between two contacts (a small fault throw) is a chain of strip triangles; zipping
+// one alone would pinch the strip at a point (its part would touch itself there), so the
+// candidates of a stretch (candidates whose triangles share edges) are merged together, in one
+// edit checked as a whole; a stretch whose whole edit is refused is tried candidate by candidate.
+// A part never loses its last triangles this way, so the regions keep their neighbours.
+void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report) {
   if (min_feature <= 0.0) return;
-  std::vector<std::pair<double, std::pair<int, int>>> candidates;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
-    if (e.dead_[t]) continue;
-    const Triangle& f = e.s_.triangles[t];
+  struct Candidate {
+    double distance;
+    int kind;        // 0: rung (u, v); 1: strip triangle t with base (u, v) and apex w
+    int u, v, w, t;
+    int contact;     // the base's contact
+    bool operator<(const Candidate& o) const {
+      return std::tie(distance, kind, u, v, w) < std::tie(o.distance, o.kind, o.u, o.v, o.w);
+    }
+  };
+  auto apart = [&](const VertexFeature& a, const VertexFeature& b) {
+    if (a.kind == VertexFeature::Surface || b.kind == VertexFeature::Surface) return false;
+    if (a.kind == VertexFeature::Contact && b.kind == VertexFeature::Contact) return a.id != b.id;
+    if (a.kind == VertexFeature::Corner && b.kind == VertexFeature::Corner) return false;
+    const VertexFeature& k = a.kind == VertexFeature::Contact ? a : b;
+    const VertexFeature& c = a.kind == VertexFeature::Corner ? a : b;
+    return !e.corner_ends_contact(c.id, k.id);
+  };
+  std::vector<Candidate> candidates;
+  std::vector<int> part_triangles(e.input_.parts.size(), 0);
+  for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+    const int t = static_cast<int>(ti);
+    if (!e.alive(t)) continue;
+    ++part_triangles[e.s_.triangle_part[t]];
+    const Triangle f = e.s_.triangles[t];
     for (int i = 0; i < 3; ++i) {
-      const int u = f[i], v = f[(i + 1) % 3];
-      if (u > v) continue;
-      const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
-      if (fu.kind == VertexFeature::Surface || fv.kind == VertexFeature::Surface) continue;
-      if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact && fu.id == fv.id) continue;
-      if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) continue;
+      const int u = f[i], v = f[(i + 1) % 3], w = f[(i + 2) % 3];
+      const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v], &fw = e.s_.features[w];
       const double len = (e.p(u) - e.p(v)).norm();
-      if (len < min_feature) candidates.push_back({len, {u, v}});
+      if (u < v && apart(fu, fv) && !(fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) &&
+          len < min_feature)
+        candidates.push_back({len, 0, std::min(u, v), std::max(u, v), -1, t, -1});
+      // Strip triangle: apex w near the base (u, v), its foot well inside the base.
+      const int c = shared_contact(e, u, v);
+      if (c < 0 || fw.kind == VertexFeature::Surface || !e.is_line_edge(u, v)) continue;
+      if (fw.kind == VertexFeature::Contact ? fw.id == c : e.corner_ends_contact(fw.id, c)) continue;
+      const Vec3 d = e.p(v) - e.p(u);
+      if (d.squaredNorm() == 0) continue;
+      const double s = (e.p(w) - e.p(u)).dot(d) / d.squaredNorm();
+      const Vec3 foot = e.p(u) + s * d;
+      const double dist = (e.p(w) - foot).norm();
+      if (dist >= min_feature || s * len < 0.25 * min_feature || (1 - s) * len < 0.25 * min_feature) continue;
+      candidates.push_back({dist, 1, u, v, w, t, c});
     }
   }
   std::sort(candidates.begin(), candidates.end());
-  for (const auto& [len, uv] : candidates) {
-    const auto [u, v] = uv;
-    if (e.around_[u].empty() || e.around_[v].empty() || !e.edge_exists(u, v)) continue;
-    const VertexFeature fu = e.s_.features[u], fv = e.s_.features[v];
-    const Vec3 where = e.p(v);
-    if (try_collapse(e, u, v, min_feature) || try_collapse(e, v, u, min_feature))
-      report.merges.push_back({FeatureMerge::CloseFeatures, -1, where, {fu, fv}});
+  {
+    std::vector<Candidate> unique;
+    for (const Candidate& c : candidates)
+      if (unique.empty() || c.kind != unique.back().kind || c.u != unique.back().u || c.v != unique.back().v ||
+          c.w != unique.back().w)
+        unique.push_back(c);
+    candidates = std::move(unique);
   }
+  // Stretches: candidates whose triangles share an edge.
+  const int n = static_cast<int>(candidates.size());
+  std::vector<int> root(n);
+  for (int i = 0; i < n; ++i) root[i] = i;
+  std::function<int(int)> find = [&](int i) { return root[i] == i ? i : root[i] = find(root[i]); };
+  {
+    std::map<std::pair<int, int>, int> first_at_edge;
+    for (int i = 0; i < n; ++i) {
+      const Triangle& f = e.s_.triangles[candidates[i].t];
+      for (int k = 0; k < 3; ++k) {
+        const std::pair<int, int> key{std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3])};
+        auto [it, inserted] = first_at_edge.emplace(key, i);
+        if (!inserted) root[find(i)] = find(it->second);
+      }
+    }
+  }
+  std::map<int, std::vector<int>> by_root;
+  for (int i = 0; i < n; ++i) by_root[find(i)].push_back(i);
+  std::vector<std::vector<int>> stretches;
+  for (auto& [r, members] : by_root) stretches.push_back(members);
+  std::sort(stretches.begin(), stretches.end(), [](const auto& a, const auto& b) { return a.front() < b.front(); });
+
+  // Merges the candidates of `members` still there (closest first), as one edit.
+  auto merge = [&](const std::vector<int>& members) {
+    std::vector<int> verts, before;
+    for (int i : members) {
+      const Candidate& c = candidates[i];
+      verts.insert(verts.end(), {c.u, c.v});
+      if (c.w >= 0) verts.push_back(c.w);
+    }
+    e.stars(verts, before);
+    std::vector<FeatureMerge> merged;
+    std::vector<int> lost(part_triangles.size(), 0);
+    const bool done = transact(e, before, false, [&](std::vector<int>& after) {
+      merged.clear();
+      std::fill(lost.begin(), lost.end(), 0);
+      std::vector<int> edge, kept;
+      // The triangles of edge (a, b) die with it: refused when a part would lose its last ones.
+      auto spare = [&](int a, int b) {
+        e.edge_triangles(a, b, edge);
+        for (int t : edge)
+          if (lost[e.s_.triangle_part[t]] + 1 >= part_triangles[e.s_.triangle_part[t]]) return false;
+        for (int t : edge) ++lost[e.s_.triangle_part[t]];
+        return true;
+      };
+      for (int i : members) {
+        const Candidate& c = candidates[i];
+        if (c.kind == 0) {
+          const int u = c.u, v = c.v;
+          if (e.star(u).empty() || e.star(v).empty() || !e.edge_exists(u, v)) continue;
+          int from = u, into = v;
+          if (!collapse_allowed(e, from, into, min_feature, 0.0, false)) std::swap(from, into);
+          if (!collapse_allowed(e, from, into, min_feature, 0.0, false) || !spare(u, v)) continue;
+          merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.s_.features[u], e.s_.features[v]}});
+          collapse(e, from, into);
+          kept.push_back(into);
+          continue;
+        }
+        // A strip triangle, if it is still there.
+        if (!e.alive(c.t) || !Editor::has(e.s_.triangles[c.t], c.u) || !Editor::has(e.s_.triangles[c.t], c.v) ||
+            !Editor::has(e.s_.triangles[c.t], c.w))
+          continue;
+        const Vec3 d = e.p(c.v) - e.p(c.u);
+        const double s = std::clamp((e.p(c.w) - e.p(c.u)).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        const Vec3 foot = projector.on_contact(c.contact, e.p(c.u) + s * d);
+        const int x = e.add_vertex(foot, {VertexFeature::Contact, c.contact});
+        split(e, c.u, c.v, x);
+        int from = x, into = c.w;
+        if (!collapse_allowed(e, from, into, min_feature, 0.0, false)) std::swap(from, into);
+        if (!collapse_allowed(e, from, into, min_feature, 0.0, false) || !spare(x, c.w)) {
+          kept.push_back(x);
+          continue;
+        }
+        merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.s_.features[c.u], e.s_.features[c.w]}});
+        collapse(e, from, into);
+        kept.push_back(into);
+      }
+      if (merged.empty()) return false;
+      for (int w : verts)
+        if (!e.star(w).empty()) kept.push_back(w);
+      e.stars(kept, after);
+      return true;
+    });
+    if (!done) return false;
+    for (size_t p = 0; p < lost.size(); ++p) part_triangles[p] -= lost[p];
+    report.merges.insert(report.merges.end(), merged.begin(), merged.end());
+    return true;
+  };
+  int whole = 0, single = 0;
+  for (const std::vector<int>& members : stretches) {
+    if (merge(members)) {
+      ++whole;
+      continue;
+    }
+    if (members.size() == 1) continue;
+    for (int i : members) single += merge({i}) ? 1 : 0;
+  }
+  if (getenv("CLEANUP_DEBUG"))
+    fprintf(stderr, "[merge] %d candidates, %zu stretches, %d merged whole, %d alone\n", n, stretches.size(), whole,
+            single);
 }
 
-int collapse_needles(Editor& e, double needle_angle) {
+// Collapses the shortest possible edge of triangles with an angle below `needle_angle` and of
+// the folds along contacts (on_one_contact).
+int collapse_needles(Editor& e, double needle_angle, bool strict = false, const std::vector<int>* only = nullptr) {
   int collapsed = 0;
   const size_t n = e.s_.triangles.size();
-  for (size_t t = 0; t < n; ++t) {
-    if (e.dead_[t]) continue;
-    if (e.min_angle(static_cast<int>(t)) >= needle_angle && !on_one_contact(e, e.s_.triangles[t])) continue;
+  for (size_t k = 0; k < (only ? only->size() : n); ++k) {
+    const int t = only ? (*only)[k] : static_cast<int>(k);
+    if (!e.alive(t)) continue;
+    if (e.min_angle(t) >= needle_angle && !on_one_contact(e, e.s_.triangles[t])) continue;
     // Shortest edge first: a needle has one, a cap is handled by flips.
     const Triangle f = e.s_.triangles[t];
     std::array<std::pair<double, int>, 3> edges;
@@ -293,7 +1069,7 @@ int collapse_needles(Editor& e, double needle_angle) {
     std::sort(edges.begin(), edges.end());
     for (const auto& [len, i] : edges) {
       const int a = f[i], b = f[(i + 1) % 3];
-      if (try_collapse(e, a, b) || try_collapse(e, b, a)) {
+      if (try_collapse(e, a, b, 0.0, 12.0, strict) || try_collapse(e, b, a, 0.0, 12.0, strict)) {
         ++collapsed;
         break;
       }
@@ -302,112 +1078,293 @@ int collapse_needles(Editor& e, double needle_angle) {
   return collapsed;
 }
 
+// Flips the edge (u, v) inside one part when it improves the smallest angle of its two
+// triangles (or, `strict`, when it repairs a violation).
+bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
+  std::vector<int> edge;
+  e.edge_triangles(u, v, edge);
+  if (edge.size() != 2) return false;
+  int t1 = edge[0], t2 = edge[1];
+  if (e.s_.triangle_part[t1] != e.s_.triangle_part[t2]) return false;
+  if (!has_directed_edge(e.s_.triangles[t1], u, v)) std::swap(t1, t2);
+  // t1 = (u, v, c) directed; a consistent t2 is (v, u, d).
+  if (!has_directed_edge(e.s_.triangles[t1], u, v) || !has_directed_edge(e.s_.triangles[t2], v, u)) return false;
+  const int c = Editor::opposite(e.s_.triangles[t1], u, v);
+  const int d = Editor::opposite(e.s_.triangles[t2], u, v);
+  if (c == d || e.edge_exists(c, d)) return false;
+  const Vec3 n1 = e.normal(t1), n2 = e.normal(t2);
+  const double before = std::min(e.min_angle(t1), e.min_angle(t2));
+  // Across a fold a flip changes the shape: allowed only to mend a bad triangle (an angle below
+  // 30 degrees), when the new edge stays within the fidelity tolerance of the part.
+  if (!strict && n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) {
+    if (before >= 30.0 || e.projector_ == nullptr || e.tolerance_ <= 0.0) return false;
+    const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
+    if (e.projector_->distance_to_part(e.s_.triangle_part[t1], middle) > e.tolerance_) return false;
+  }
+  const Triangle g1{c, u, d}, g2{d, v, c};
+  const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
+  if (!strict && after <= before + 1e-3) return false;
+  const Vec3 m1 = normal_of(e.p(c), e.p(u), e.p(d)), m2 = normal_of(e.p(d), e.p(v), e.p(c));
+  const Vec3 ref = n1 + n2;
+  if (m1.dot(ref) <= 0 || m2.dot(ref) <= 0) return false;
+  const int part = e.s_.triangle_part[t1];
+  return transact(e, {t1, t2}, strict, [&](std::vector<int>& after_tris) {
+    e.kill(t1);
+    e.kill(t2);
+    after_tris = {e.add_triangle(g1, part), e.add_triangle(g2, part)};
+    return true;
+  });
+}
+
 int flip_edges(Editor& e, double flatness_deg) {
   const double cos_flat = std::cos(flatness_deg * M_PI / 180.0);
   int flips = 0;
-  std::vector<int> edge;
   for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
-    for (int i = 0; i < 3 && !e.dead_[t]; ++i) {
+    for (int i = 0; i < 3 && e.alive(static_cast<int>(t)); ++i) {
       const Triangle f = e.s_.triangles[t];
-      const int u = f[i], v = f[(i + 1) % 3];
-      e.edge_triangles(u, v, edge);
-      if (edge.size() != 2) continue;
-      const int t1 = edge[0] == static_cast<int>(t) ? edge[0] : edge[1];
-      const int t2 = t1 == edge[0] ? edge[1] : edge[0];
-      if (e.s_.triangle_part[t1] != e.s_.triangle_part[t2]) continue;
-      const int c = Editor::opposite(e.s_.triangles[t1], u, v);
-      const int d = Editor::opposite(e.s_.triangles[t2], u, v);
-      if (c == d || e.edge_exists(c, d)) continue;
-      // t1 = (u, v, c) directed; a consistent t2 is (v, u, d).
-      if (!has_directed_edge(e.s_.triangles[t2], v, u)) continue;
-      const Vec3 n1 = e.normal(t1), n2 = e.normal(t2);
-      if (n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) continue;
-      const double before = std::min(e.min_angle(t1), e.min_angle(t2));
-      const Triangle g1{c, u, d}, g2{d, v, c};
-      const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
-      if (after <= before + 1e-3) continue;
-      const Vec3 m1 = normal_of(e.p(c), e.p(u), e.p(d)), m2 = normal_of(e.p(d), e.p(v), e.p(c));
-      const Vec3 ref = n1 + n2;
-      if (m1.dot(ref) <= 0 || m2.dot(ref) <= 0) continue;
-      const int part = e.s_.triangle_part[t1];
-      e.kill(t1);
-      e.kill(t2);
-      e.add_triangle(g1, part);
-      e.add_triangle(g2, part);
-      for (int w : {u, v, c, d}) e.tidy(w);
-      ++flips;
+      if (try_flip(e, f[i], f[(i + 1) % 3], cos_flat, false)) ++flips;
     }
   }
   return flips;
 }
 
-// One Gauss-Seidel pass of tangential smoothing: surface vertices move toward the area-weighted
-// centroid of their ring within the tangent plane, then back onto their input part; contact
-// vertices move toward the middle of their two contact neighbours, then back onto the contact.
-// A move that would fold a triangle is halved, then dropped.
-void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr) {
+// Where smoothing would move vertex v: surface vertices toward the area-weighted centroid of
+// their ring within the tangent plane, contact vertices toward the middle of their two contact
+// neighbours. False when v stays.
+bool smoothing_target(Editor& e, int v, Vec3& target) {
+  const VertexFeature f = e.s_.features[v];
+  if (f.kind == VertexFeature::Corner || f.pinned) return false;
+  const std::vector<int>& ring = e.star(v);
+  if (ring.empty()) return false;
+  if (f.kind == VertexFeature::Surface) {
+    Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero();
+    double area = 0;
+    for (int t : ring) {
+      if (e.s_.triangle_part[t] != f.id) return false;
+      const Triangle& tri = e.s_.triangles[t];
+      const Vec3 n = e.normal(t);
+      const double a = 0.5 * n.norm();
+      centroid += a * (e.p(tri[0]) + e.p(tri[1]) + e.p(tri[2])) / 3.0;
+      normal += n;
+      area += a;
+    }
+    if (area <= 0 || normal.norm() == 0) return false;
+    centroid /= area;
+    normal.normalize();
+    Vec3 move = centroid - e.p(v);
+    move -= move.dot(normal) * normal;
+    target = e.p(v) + move;
+    return true;
+  }
   std::vector<int> nb;
+  e.neighbours(v, nb);
+  Vec3 sum = Vec3::Zero();
+  int count = 0;
+  for (int w : nb) {
+    const VertexFeature& fw = e.s_.features[w];
+    const bool on_contact = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
+                            (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
+    if (on_contact && e.is_line_edge(v, w)) {
+      sum += e.p(w);
+      ++count;
+    }
+  }
+  if (count != 2) return false;
+  target = 0.5 * sum;
+  return true;
+}
+
+// Where a move of v toward `target` (then back onto its feature) ends: the full step, else half,
+// else a quarter, the first that folds no triangle of its ring. False when none does.
+bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, double step,
+                   Vec3& result) {
+  const VertexFeature f = e.s_.features[v];
+  const Vec3 old = e.p(v);
+  const Vec3 moved = old + step * (target - old);
+  result = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
+  if (result == old) return false;
+  for (int t : e.star(v)) {
+    const Triangle& tri = e.s_.triangles[t];
+    Vec3 q[3];
+    for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? result : e.p(tri[i]);
+    const Vec3 n = normal_of(q[0], q[1], q[2]);
+    const Vec3 before = e.normal(t);
+    if (!(n.dot(before) > 0.0 && n.norm() > 1e-3 * before.norm())) return false;
+  }
+  return true;
+}
+
+// Moves v toward `target` when the validity allows it (see unfolded_move()).
+bool try_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, bool strict) {
+  const std::vector<int> ring = e.star(v);
+  Vec3 x;
+  for (double step : {1.0, 0.5, 0.25}) {
+    if (!unfolded_move(e, projector, v, target, step, x)) continue;
+    if (transact(e, ring, strict, [&](std::vector<int>& after) {
+          e.move(v, x);
+          after = ring;
+          return true;
+        }))
+      return true;
+  }
+  return false;
+}
+
+// The vertices to put back after a batch of moves: the moved vertices of the triangles in a
+// violation that the positions before the batch (`before`) did not have.
+std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3>& before,
+                          const std::vector<char>& moved) {
+  std::vector<int> out, tris;
+  auto blame = [&](int t) {
+    for (int w : e.s_.triangles[t])
+      if (moved[w]) out.push_back(w);
+  };
+  auto touched = [&](int t) {
+    for (int w : e.s_.triangles[t])
+      if (moved[w]) return true;
+    return false;
+  };
+  // Evaluate the old state by swapping the positions in (a cheap swap of two vectors).
+  std::swap(e.s_.vertices, before);
+  std::vector<int> guilty;
+  for (const auto& [a, b] : now.crossings)
+    if ((touched(a) || touched(b)) &&
+        (is_degenerate(e.s_.vertices, e.s_.triangles[a]) || is_degenerate(e.s_.vertices, e.s_.triangles[b]) ||
+         !triangles_intersect(e.s_.vertices, e.s_.triangles[a], e.s_.triangles[b])))
+      guilty.insert(guilty.end(), {a, b});
+  for (const auto& [a, b] : now.edges) {
+    e.edge_triangles(a, b, tris);
+    bool any = false;
+    for (int t : tris) any = any || touched(t);
+    if (any && e.edge_check(a, b).total() == 0) guilty.insert(guilty.end(), tris.begin(), tris.end());
+  }
+  for (int t : now.degenerate)
+    if (touched(t) && !is_degenerate(e.s_.vertices, e.s_.triangles[t])) guilty.push_back(t);
+  std::swap(e.s_.vertices, before);
+  for (int t : guilty) blame(t);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// One Gauss-Seidel pass of tangential smoothing (see smoothing_target()). Moves that fold no
+// triangle of their ring are made, then the whole surface is checked at once, which is much
+// cheaper than checking every move: the vertices of triangles in a violation the pass made are
+// put back where they were, until the pass made none.
+void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr) {
+  std::vector<Vec3> start = e.s_.vertices;
+  std::vector<char> moved(e.s_.vertices.size(), 0);
+  Vec3 target, x;
+  bool any = false;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     if (only != nullptr && !(*only)[v]) continue;
-    const VertexFeature f = e.s_.features[v];
-    if (f.kind == VertexFeature::Corner || f.pinned) continue;
-    e.tidy(v);
-    const auto& ring = e.around_[v];
-    if (ring.empty()) continue;
-    Vec3 target;
-    if (f.kind == VertexFeature::Surface) {
-      Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero();
-      double area = 0;
-      bool one_part = true;
-      for (int t : ring) {
-        const Triangle& tri = e.s_.triangles[t];
-        const Vec3 n = e.normal(t);
-        const double a = 0.5 * n.norm();
-        centroid += a * (e.p(tri[0]) + e.p(tri[1]) + e.p(tri[2])) / 3.0;
-        normal += n;
-        area += a;
-        one_part = one_part && e.s_.triangle_part[t] == f.id;
+    if (!smoothing_target(e, v, target)) continue;
+    for (double step : {1.0, 0.5, 0.25})
+      if (unfolded_move(e, projector, v, target, step, x)) {
+        e.move(v, x, false);
+        moved[v] = 1;
+        any = true;
+        break;
       }
-      if (!one_part || area <= 0 || normal.norm() == 0) continue;
-      centroid /= area;
-      normal.normalize();
-      Vec3 move = centroid - e.p(v);
-      move -= move.dot(normal) * normal;
-      target = e.p(v) + move;
-    } else {
-      e.neighbours(v, nb);
-      Vec3 sum = Vec3::Zero();
-      int count = 0;
-      for (int w : nb) {
-        const VertexFeature& fw = e.s_.features[w];
-        const bool on_contact = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
-                                (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
-        if (on_contact && e.is_line_edge(v, w)) {
-          sum += e.p(w);
-          ++count;
-        }
-      }
-      if (count != 2) continue;
-      target = 0.5 * sum;
-    }
-    const Vec3 old = e.p(v);
-    std::vector<Vec3> before;
-    before.reserve(ring.size());
-    for (int t : ring) before.push_back(e.normal(t));
-    for (double step : {1.0, 0.5, 0.25}) {
-      const Vec3 moved = old + step * (target - old);
-      e.s_.vertices[v] = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved)
-                                                           : projector.on_contact(f.id, moved);
-      bool ok = true;
-      for (size_t k = 0; k < ring.size() && ok; ++k) {
-        const Vec3 n = e.normal(ring[k]);
-        ok = n.dot(before[k]) > 0.0 && n.norm() > 1e-3 * before[k].norm();
-      }
-      if (ok) break;
-      e.s_.vertices[v] = old;
+  }
+  for (int round = 0; any && round < 16; ++round) {
+    const std::vector<int> back = culprits(e, e.census(false), start, moved);
+    if (back.empty()) break;
+    for (int v : back) {
+      e.s_.vertices[v] = start[v];
+      moved[v] = 0;
     }
   }
+  e.rebuild_grid();
+}
+
+// Smallest angle of the triangles around v with v at x.
+double ring_min_angle(Editor& e, int v, const Vec3& x) {
+  double worst = 180.0;
+  for (int t : e.star(v)) {
+    const Triangle& f = e.s_.triangles[t];
+    Vec3 q[3];
+    for (int i = 0; i < 3; ++i) q[i] = f[i] == v ? x : e.p(f[i]);
+    worst = std::min(worst, min_angle_deg(q[0], q[1], q[2]));
+  }
+  return worst;
+}
+
+// The position of v, on its feature, that maximises the smallest angle of its ring among a few
+// candidates: along the contact toward each contact neighbour (which staggers the vertices on
+// the two sides of a thin strip, where the middle of the neighbours gives needles), or around
+// the vertex in its part. False when no candidate is better by `gain` degrees.
+bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double gain, Vec3& best) {
+  const VertexFeature f = e.s_.features[v];
+  if (f.kind == VertexFeature::Corner || f.pinned) return false;
+  const std::vector<int> ring = e.star(v);
+  if (ring.empty()) return false;
+  const Vec3 old = e.p(v);
+  const double now = ring_min_angle(e, v, old);
+  double best_angle = now + gain;
+  bool found = false;
+  std::vector<Vec3> before;
+  for (int t : ring) before.push_back(e.normal(t));
+  auto consider = [&](const Vec3& x) {
+    // No triangle of the ring may turn over or flatten.
+    for (size_t k = 0; k < ring.size(); ++k) {
+      const Triangle& tri = e.s_.triangles[ring[k]];
+      Vec3 q[3];
+      for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? x : e.p(tri[i]);
+      const Vec3 n = normal_of(q[0], q[1], q[2]);
+      if (!(n.dot(before[k]) > 0.0 && n.norm() > 1e-3 * before[k].norm())) return;
+    }
+    const double a = ring_min_angle(e, v, x);
+    if (a > best_angle) {
+      best_angle = a;
+      best = x;
+      found = true;
+    }
+  };
+  std::vector<int> nb;
+  e.neighbours(v, nb);
+  if (f.kind == VertexFeature::Contact) {
+    for (int w : nb) {
+      const VertexFeature& fw = e.s_.features[w];
+      const bool along = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
+                         (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
+      if (!along || !e.is_line_edge(v, w)) continue;
+      for (double t : {0.08, 0.16, 0.24, 0.32, 0.4})
+        consider(projector.on_contact(f.id, old + t * (e.p(w) - old)));
+    }
+    return found;
+  }
+  for (int t : ring)
+    if (e.s_.triangle_part[t] != f.id) return false;
+  // Toward each neighbour and away from it, in steps of its distance.
+  for (int w : nb)
+    for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3})
+      consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
+  return found;
+}
+
+// Moves the vertices of triangles with an angle below `angle_deg` to where their ring's smallest
+// angle is largest (angle_target()). They are few: each move is checked on its own.
+int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_deg) {
+  std::vector<char> wanted(e.s_.vertices.size(), 0);
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+    if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < angle_deg)
+      for (int v : e.s_.triangles[t]) wanted[v] = 1;
+  Vec3 x;
+  int count = 0;
+  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+    const int v = static_cast<int>(vi);
+    if (!wanted[v] || !angle_target(e, projector, v, 0.5, x)) continue;
+    const std::vector<int> ring = e.star(v);
+    if (transact(e, ring, false, [&](std::vector<int>& after) {
+          e.move(v, x);
+          after = ring;
+          return true;
+        }))
+      ++count;
+  }
+  return count;
 }
 
 // ---- fidelity: split where the remesh strays from the input by more than a tolerance ----
@@ -456,7 +1413,9 @@ class ContactArcs {
     const double l2 = d.squaredNorm();
     for (size_t i = 0; i < line.size(); ++i) {
       const double s = arc[i];
-      const bool inside = wrap ? (s < lo || s > hi) : (s > lo && s < hi);
+      // Bounds included: a contact end merged away (Fig. 11b) lies at a bound; a vertex at an
+      // output end is at distance 0 from the chord, never the farthest.
+      const bool inside = wrap ? (s <= lo || s >= hi) : (s >= lo && s <= hi);
       if (!inside) continue;
       const Vec3& x = m_.vertices[line[i]];
       const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
@@ -474,123 +1433,30 @@ class ContactArcs {
   std::vector<std::vector<double>> arc_;
 };
 
-// The contact both u and v sample (a contact vertex's contact, or the one a corner ends that the
-// other vertex lies on), -1 when none.
-int shared_contact(const Editor& e, int u, int v) {
-  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
-  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact) return fu.id == fv.id ? fu.id : -1;
-  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner)
-    return e.corner_ends_contact(fv.id, fu.id) ? fu.id : -1;
-  if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner)
-    return e.corner_ends_contact(fu.id, fv.id) ? fv.id : -1;
-  if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) {
-    for (int c : e.input_.corners[fu.id].contacts)
-      if (e.corner_ends_contact(fv.id, c)) return c;
-  }
-  return -1;
-}
-
-// Splits edge (u, v) at x in every triangle that has it, keeping orientations.
-void split_edge(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feature) {
+// Splits edge (u, v) at new vertex x in every triangle that has it, when the validity gets no
+// worse.
+bool try_split(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feature) {
   std::vector<int> tris;
   e.edge_triangles(u, v, tris);
-  const int w = static_cast<int>(e.s_.vertices.size());
-  e.s_.vertices.push_back(x);
-  e.s_.features.push_back(feature);
-  e.around_.emplace_back();
-  for (int t : tris) {
-    const Triangle f = e.s_.triangles[t];
-    const int part = e.s_.triangle_part[t];
-    int k = 0;
-    while (!((f[k] == u && f[(k + 1) % 3] == v) || (f[k] == v && f[(k + 1) % 3] == u))) ++k;
-    const int a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
-    e.kill(t);
-    e.add_triangle({a, w, c}, part);
-    e.add_triangle({w, b, c}, part);
-  }
-  for (int z : {u, v}) e.tidy(z);
+  if (tris.empty()) return false;
+  const int w = e.add_vertex(x, feature);
+  return transact(e, tris, false, [&](std::vector<int>& after) {
+    split(e, u, v, w, &after);
+    return true;
+  });
 }
 
-// Two triangles of different parts on the same three vertices: a pocket of zero volume where
-// two surfaces collapsed onto each other. Removing both keeps every edge's parity.
-int remove_coincident_triangles(Editor& e) {
-  std::map<std::array<int, 3>, int> first;
-  int removed = 0;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
-    if (e.dead_[t]) continue;
-    std::array<int, 3> key = e.s_.triangles[t];
-    std::sort(key.begin(), key.end());
-    auto [it, inserted] = first.emplace(key, static_cast<int>(t));
-    if (inserted) continue;
-    if (e.dead_[it->second]) {
-      it->second = static_cast<int>(t);
-      continue;
-    }
-    e.kill(it->second);
-    e.kill(static_cast<int>(t));
-    removed += 2;
-  }
-  for (size_t v = 0; v < e.s_.vertices.size(); ++v) e.tidy(static_cast<int>(v));
-  return removed;
-}
-
-// Pairs of alive triangles that intersect (exact predicates), as editor triangle indices.
-std::vector<std::pair<int, int>> intersecting_pairs(const Editor& e) {
-  std::vector<int> alive;
-  std::vector<Triangle> tris;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
-    if (!e.dead_[t] && !is_degenerate(e.s_.vertices, e.s_.triangles[t])) {
-      alive.push_back(static_cast<int>(t));
-      tris.push_back(e.s_.triangles[t]);
-    }
-  std::vector<std::pair<int, int>> pairs = find_self_intersections(e.s_.vertices, tris);
-  for (auto& [a, b] : pairs) {
-    a = alive[a];
-    b = alive[b];
-  }
-  return pairs;
-}
-
-// Removes intersections (paper §3.3: "resolved by vertex displacements or edge flipping"): the
-// vertices of intersecting triangles and their neighbours are smoothed again, which pulls a
-// fold back onto its surface, the edges around are flipped, and needles among the intersecting
-// triangles are collapsed. Refining the triangles does not help: the pairs left cross because
-// of how they are connected, not because their chords are too long.
-void resolve_intersections(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options,
-                           CleanupReport& report) {
-  report.coincident_removed += remove_coincident_triangles(e);
-  std::vector<std::pair<int, int>> pairs = intersecting_pairs(e);
-  report.intersections_found = static_cast<int>(pairs.size());
-  std::vector<int> nb;
-  for (int round = 0; round < options.intersection_rounds && !pairs.empty(); ++round) {
-    std::vector<char> involved(e.s_.vertices.size(), 0);
-    for (const auto& [a, b] : pairs)
-      for (int t : {a, b})
-        for (int v : e.s_.triangles[t]) {
-          involved[v] = 1;
-          e.neighbours(v, nb);
-          for (int w : nb) involved[w] = 1;
-        }
-    for (int k = 0; k < 3; ++k) smooth(e, projector, &involved);
-    report.flips += flip_edges(e, options.flip_flatness_deg);
-    for (const auto& [a, b] : pairs)
-      for (int t : {a, b}) {
-        if (e.dead_[t] || e.min_angle(t) >= options.needle_angle_deg) continue;
-        const Triangle f = e.s_.triangles[t];
-        std::array<std::pair<double, int>, 3> edges;
-        for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
-        std::sort(edges.begin(), edges.end());
-        for (const auto& [len, i] : edges) {
-          const int u = f[i], v = f[(i + 1) % 3];
-          if (try_collapse(e, u, v) || try_collapse(e, v, u)) {
-            ++report.needles_collapsed;
-            break;
-          }
-        }
-      }
-    pairs = intersecting_pairs(e);
-  }
-  report.intersections_left = static_cast<int>(pairs.size());
+// The contact a line edge (u, v) follows, for the fidelity check: the contact both sample, or,
+// between a contact vertex and a corner that does not end its contact (corners merged because
+// the resolution is coarse, paper Fig. 11b), that contact: its input vertices between the two
+// (the corner merged away among them) are then checked too.
+int fidelity_contact(const Editor& e, int u, int v) {
+  const int c = shared_contact(e, u, v);
+  if (c >= 0) return c;
+  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner) return fu.id;
+  if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner) return fv.id;
+  return -1;
 }
 
 // Splits contact edges whose chord leaves the input contact by more than `tolerance` (at the
@@ -601,23 +1467,55 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
   int splits = 0;
   const size_t n = e.s_.triangles.size();
   std::vector<int> tris;
-  for (size_t t = 0; t < n; ++t) {
-    if (e.dead_[t]) continue;
+  for (size_t ti = 0; ti < n; ++ti) {
+    const int t = static_cast<int>(ti);
+    if (!e.alive(t)) continue;
     const Triangle f = e.s_.triangles[t];
     bool done = false;
     for (int i = 0; i < 3 && !done; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
       if (!e.is_line_edge(u, v)) continue;
-      const int c = shared_contact(e, u, v);
+      const int c = fidelity_contact(e, u, v);
       if (c < 0) continue;
       double distance = 0.0;
-      const int x = arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)), e.p(u), e.p(v), &distance);
+      const int x =
+          arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)), e.p(u), e.p(v), &distance);
       if (x < 0 || distance <= tolerance) continue;
-      split_edge(e, u, v, e.input_.vertices[x], {VertexFeature::Contact, c, true});
-      ++splits;
-      done = true;
+      // The bend is kept by a vertex there. Close to an end (a third of the edge), that end moves
+      // there rather than leave a short edge (needles in every part along the contact).
+      const Vec3& bend = e.input_.vertices[x];
+      const double len = (e.p(v) - e.p(u)).norm();
+      int end = -1;
+      for (int w : {u, v}) {
+        const VertexFeature& fw = e.s_.features[w];
+        if (fw.kind == VertexFeature::Contact && fw.id == c && !fw.pinned && (bend - e.p(w)).norm() < len / 3) end = w;
+      }
+      if (end >= 0) {
+        const std::vector<int> ring = e.star(end);
+        bool folds = false;
+        for (int r : ring) {
+          Triangle f2 = e.s_.triangles[r];
+          Vec3 q[3];
+          for (int i2 = 0; i2 < 3; ++i2) q[i2] = f2[i2] == end ? bend : e.p(f2[i2]);
+          folds = folds || normal_of(q[0], q[1], q[2]).dot(e.normal(r)) <= 0;
+        }
+        if (!folds && transact(e, ring, false, [&](std::vector<int>& after) {
+              e.move(end, bend);
+              after = ring;
+              return true;
+            })) {
+          e.s_.features[end].pinned = true;
+          ++splits;
+          done = true;
+          continue;
+        }
+      }
+      if (try_split(e, u, v, bend, {VertexFeature::Contact, c, true})) {
+        ++splits;
+        done = true;
+      }
     }
-    if (done) continue;
+    if (done || !e.alive(t)) continue;
     const int part = e.s_.triangle_part[t];
     const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
     if ((projector.on_part(part, centroid) - centroid).norm() <= tolerance) continue;
@@ -636,10 +1534,341 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
     }
     if (best < 0) continue;
     const int u = f[best], v = f[(best + 1) % 3];
-    split_edge(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part});
-    ++splits;
+    if (try_split(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part})) ++splits;
   }
   return splits;
+}
+
+// Squared distance from p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
+double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.squaredNorm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).squaredNorm();
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).squaredNorm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).squaredNorm();
+  const double denom = 1.0 / (va + vb + vc);
+  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).squaredNorm();
+}
+
+// The other half of the fidelity check: input vertices inside a part (a fold, a bump between the
+// output vertices) farther than `tolerance` from the remesh are inserted into the nearest
+// triangle of their part, where they stay (pinned): the remesh then passes through them.
+int refine_toward_input(Editor& e, double tolerance) {
+  if (tolerance <= 0.0) return 0;
+  const StructuralModel& in = e.input_;
+  std::vector<int> part_of(in.vertices.size(), -1);
+  for (size_t p = 0; p < in.parts.size(); ++p)
+    for (int v : in.parts[p].model_vertex) part_of[v] = part_of[v] == -1 ? static_cast<int>(p) : -2;
+  for (const Contact& c : in.contacts)
+    for (int v : c.vertices) part_of[v] = -2;
+  std::vector<Triangle> tris;
+  std::vector<int> index;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+    if (e.alive(static_cast<int>(t))) {
+      tris.push_back(e.s_.triangles[t]);
+      index.push_back(static_cast<int>(t));
+    }
+  if (tris.empty()) return 0;
+  const TriangleSetDistance distance(e.s_.vertices, tris);
+  std::vector<std::pair<double, int>> far;
+  for (size_t v = 0; v < in.vertices.size(); ++v) {
+    if (part_of[v] < 0) continue;
+    const double d2 = distance.squared_distance(in.vertices[v]);
+    if (d2 > tolerance * tolerance) far.emplace_back(std::sqrt(d2), static_cast<int>(v));
+  }
+  std::sort(far.rbegin(), far.rend());
+  std::vector<char> split_once(e.s_.triangles.size(), 0);
+  int inserted = 0;
+  for (const auto& [d, v] : far) {
+    const Vec3& x = in.vertices[v];
+    const int part = part_of[v];
+    // Still far (an earlier insertion may have come close)?
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    const Vec3 reach = Vec3::Constant(2.0 * d + e.mean_edge_);
+    e.candidates(x - reach, x + reach, [&](int t) {
+      const Triangle& f = e.s_.triangles[t];
+      const double d2 = squared_distance_to_triangle(x, e.p(f[0]), e.p(f[1]), e.p(f[2]));
+      if (d2 < tolerance * tolerance) best_d2 = -1;  // close enough now, whichever part
+      if (best_d2 >= 0 && e.s_.triangle_part[t] == part && d2 < best_d2) {
+        best_d2 = d2;
+        best = t;
+      }
+    });
+    if (best_d2 < 0 || best < 0 || (best < static_cast<int>(split_once.size()) && split_once[best])) continue;
+    const Triangle f = e.s_.triangles[best];
+    const int w = e.add_vertex(x, {VertexFeature::Surface, part, true});
+    if (transact(e, {best}, false, [&](std::vector<int>& after) {
+          e.kill(best);
+          for (int i = 0; i < 3; ++i) after.push_back(e.add_triangle({f[i], f[(i + 1) % 3], w}, part));
+          return true;
+        })) {
+      if (best < static_cast<int>(split_once.size())) split_once[best] = 1;
+      ++inserted;
+    }
+  }
+  return inserted;
+}
+
+// Makes edge (a, b) in a part where a and b are the far corners of two adjacent triangles, by
+// flipping their common edge, when that repairs the validity.
+bool recover_edge(Editor& e, int a, int b) {
+  std::vector<int> edge;
+  for (int t : std::vector<int>(e.star(a))) {
+    if (!e.alive(t)) continue;
+    const Triangle& f = e.s_.triangles[t];
+    const int k = f[0] == a ? 0 : f[1] == a ? 1 : 2;
+    const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
+    if (x == b || y == b) continue;
+    e.edge_triangles(x, y, edge);
+    if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != e.s_.triangle_part[edge[1]]) continue;
+    const int other = edge[0] == t ? edge[1] : edge[0];
+    if (Editor::opposite(e.s_.triangles[other], x, y) != b) continue;
+    if (try_flip(e, x, y, -1.0, true)) return true;
+  }
+  return false;
+}
+
+void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupReport& report) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [a, b] : census.crossings) {
+    if (!e.alive(a) || !e.alive(b)) continue;
+    std::array<int, 3> ka = e.s_.triangles[a], kb = e.s_.triangles[b];
+    std::sort(ka.begin(), ka.end());
+    std::sort(kb.begin(), kb.end());
+    if (ka == kb) pairs.emplace_back(a, b);
+  }
+  // Patches: pairs sharing an edge.
+  const int n = static_cast<int>(pairs.size());
+  std::vector<int> patch(n);
+  for (int i = 0; i < n; ++i) patch[i] = i;
+  std::function<int(int)> root = [&](int i) { return patch[i] == i ? i : patch[i] = root(patch[i]); };
+  auto shares_edge = [&](int i, int j) {
+    int shared = 0;
+    for (int v : e.s_.triangles[pairs[i].first]) shared += Editor::has(e.s_.triangles[pairs[j].first], v) ? 1 : 0;
+    return shared >= 2;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (shares_edge(i, j)) patch[root(i)] = root(j);
+  std::map<int, std::vector<int>> patches;
+  for (int i = 0; i < n; ++i) patches[root(i)].push_back(i);
+  for (const auto& [r, members] : patches) {
+    std::vector<int> tris, verts;
+    for (int i : members) {
+      tris.insert(tris.end(), {pairs[i].first, pairs[i].second});
+      for (int v : e.s_.triangles[pairs[i].first]) verts.push_back(v);
+    }
+    bool alive = true;
+    for (int t : tris) alive = alive && e.alive(t);
+    if (!alive) continue;
+    std::vector<int> before;
+    e.stars(verts, before);
+    if (getenv("CLEANUP_DEBUG")) {
+      std::vector<int> et;
+      for (int t : tris) {
+        const Triangle& f = e.s_.triangles[t];
+        fprintf(stderr, "[patch] tri %d part %d (%d %d %d)\n", t, e.s_.triangle_part[t], f[0], f[1], f[2]);
+        for (int i = 0; i < 3; ++i) {
+          e.edge_triangles(f[i], f[(i + 1) % 3], et);
+          fprintf(stderr, "   edge %d-%d:", f[i], f[(i + 1) % 3]);
+          for (int x : et) fprintf(stderr, " %d(p%d)", x, e.s_.triangle_part[x]);
+          fprintf(stderr, "\n");
+        }
+      }
+    }
+    if (transact(e, before, true, [&](std::vector<int>& after) {
+          for (int t : tris) e.kill(t);
+          e.stars(verts, after);
+          return true;
+        }))
+      report.coincident_removed += static_cast<int>(tris.size());
+  }
+}
+
+// Splits the longest edge of triangles with an angle below `angle_deg` at its middle (moved
+// onto the feature it lies on: the contact both ends sample, else the part), when that edge is
+// longer than `min_length`: a needle in a strip between two contacts narrower than the edges
+// becomes two better triangles, and flips and smoothing spread the new vertices (a sizing that
+// follows the local feature size, as in Delaunay refinement).
+int refine_bad_triangles(Editor& e, const SurfaceProjector& projector, double angle_deg, double min_length) {
+  int splits = 0;
+  const size_t n = e.s_.triangles.size();
+  for (size_t ti = 0; ti < n; ++ti) {
+    const int t = static_cast<int>(ti);
+    if (!e.alive(t) || e.min_angle(t) >= angle_deg) continue;
+    const Triangle f = e.s_.triangles[t];
+    int best = -1;
+    double longest = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double len = (e.p(f[i]) - e.p(f[(i + 1) % 3])).norm();
+      if (len > longest) {
+        longest = len;
+        best = i;
+      }
+    }
+    if (longest < min_length) continue;
+    const int u = f[best], v = f[(best + 1) % 3];
+    const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
+    const int c = e.is_line_edge(u, v) ? shared_contact(e, u, v) : -1;
+    if (c >= 0) {
+      if (try_split(e, u, v, projector.on_contact(c, middle), {VertexFeature::Contact, c})) ++splits;
+      continue;
+    }
+    std::vector<int> tris;
+    e.edge_triangles(u, v, tris);
+    if (tris.size() != 2 || e.s_.triangle_part[tris[0]] != e.s_.triangle_part[tris[1]]) continue;
+    const int part = e.s_.triangle_part[t];
+    if (try_split(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part})) ++splits;
+  }
+  return splits;
+}
+
+// Repairs what the mesh building left invalid (paper §3.3: intersections "resolved by vertex
+// displacements or edge flipping"): around every triangle involved in a violation, edits that
+// make the validity strictly better are kept: moving a vertex to its smoothed position, flipping
+// an edge, collapsing an edge (a needle, a fold along a contact).
+void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options, CleanupReport& report) {
+  Editor::Census census = e.census();
+  report.intersections_found = census.count.crossings;
+  const double cos_flat = std::cos(options.flip_flatness_deg * M_PI / 180.0);
+  std::vector<int> verts, nb;
+  Vec3 target;
+  for (int round = 0; round < options.intersection_rounds && census.count.total() > 0; ++round) {
+    const std::vector<int> involved = census.triangles(e);
+    // The vertices of the involved triangles and their neighbours.
+    verts.clear();
+    for (int t : involved)
+      for (int w : e.s_.triangles[t]) {
+        verts.push_back(w);
+        e.neighbours(w, nb);
+        verts.insert(verts.end(), nb.begin(), nb.end());
+      }
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    for (int w : verts)
+      if (smoothing_target(e, w, target)) try_move(e, projector, w, target, true);
+    for (int t : involved) {
+      if (!e.alive(t)) continue;
+      const Triangle f = e.s_.triangles[t];
+      for (int i = 0; i < 3; ++i)
+        if (try_flip(e, f[i], f[(i + 1) % 3], cos_flat, true)) {
+          ++report.flips;
+          break;
+        }
+    }
+    for (int t : involved) {
+      if (!e.alive(t)) continue;
+      const Triangle f = e.s_.triangles[t];
+      std::array<std::pair<double, int>, 3> edges;
+      for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
+      std::sort(edges.begin(), edges.end());
+      // Features closer than the resolution may merge here, when that repairs: what is left
+      // invalid is most often a feature too small for the resolution (a tiny contact loop, two
+      // contacts closer than an edge).
+      for (const auto& [len, i] : edges) {
+        const int a = f[i], b = f[(i + 1) % 3];
+        const VertexFeature fa = e.s_.features[a], fb = e.s_.features[b];
+        const Vec3 where = e.p(b);
+        if (try_collapse(e, a, b, e.mean_edge_, 0.0, true) || try_collapse(e, b, a, e.mean_edge_, 0.0, true)) {
+          ++report.needles_collapsed;
+          const bool same = fa.kind == fb.kind && fa.id == fb.id;
+          const bool slide = (fa.kind == VertexFeature::Contact && fb.kind == VertexFeature::Corner &&
+                              e.corner_ends_contact(fb.id, fa.id)) ||
+                             (fb.kind == VertexFeature::Contact && fa.kind == VertexFeature::Corner &&
+                              e.corner_ends_contact(fa.id, fb.id));
+          if (!same && !slide && fa.kind != VertexFeature::Surface && fb.kind != VertexFeature::Surface)
+            report.merges.push_back({FeatureMerge::Repair, -1, where, {fa, fb}});
+          break;
+        }
+      }
+    }
+    // Two triangles of different parts on the same three vertices: a region pinched to nothing
+    // between two surfaces (a lens thinner than the resolution), or two folds along one contact.
+    // Such pairs come in patches (edge-connected); a whole patch goes when that keeps every edge
+    // valid (the edges around it then join the surfaces that met the lens).
+    remove_coincident_patches(e, census, report);
+    // An edge where some parts that meet there in the input have no triangle (the leak of a
+    // contact that lost a part): a flip in such a part that makes the edge.
+    for (const auto& [a, b] : census.edges) {
+      if (!e.edge_exists(a, b)) continue;
+      if (recover_edge(e, a, b)) ++report.flips;
+    }
+    Editor::Census next = e.census();
+    if (getenv("CLEANUP_DEBUG"))
+      fprintf(stderr, "[repair] round %d: holes %d leaks %d crossings %d degenerate %d pinches %d -> %d %d %d %d %d\n",
+              round, census.count.holes, census.count.leaks, census.count.crossings, census.count.degenerate,
+              census.count.pinches, next.count.holes, next.count.leaks, next.count.crossings, next.count.degenerate,
+              next.count.pinches);
+    const bool progress = next.count.total() < census.count.total();
+    census = std::move(next);
+    if (!progress) break;
+  }
+  report.intersections_left = census.count.crossings;
+  report.holes_left = census.count.holes;
+  report.leaks_left = census.count.leaks;
+  report.degenerate_left = census.count.degenerate;
+  report.pinches_left = census.count.pinches;
+}
+
+// DEBUG (temporary): why the needles left are not collapsed.
+void debug_needles(Editor& e, double below) {
+  std::map<std::string, int> why;
+  for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+    const int t = static_cast<int>(ti);
+    if (!e.alive(t) || e.min_angle(t) >= below) continue;
+    const Triangle f = e.s_.triangles[t];
+    const TriangleQuality q = measure_triangle(e.p(f[0]), e.p(f[1]), e.p(f[2]));
+    std::array<std::pair<double, int>, 3> edges;
+    for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).norm(), i};
+    std::sort(edges.begin(), edges.end());
+    std::string shape = q.max_angle_deg > 150 ? "cap" : "needle";
+    const int a = f[edges[0].second], b = f[(edges[0].second + 1) % 3];
+    std::string r;
+    for (auto [u, v] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
+      std::string k = "SKC"[e.s_.features[u].kind] + std::string(e.s_.features[u].pinned ? "*" : "") + ">" +
+                      "SKC"[e.s_.features[v].kind] + std::string(e.s_.features[v].pinned ? "*" : "");
+      if (!feature_allows_collapse(e, u, v, 0.0, false)) {
+        r += k + ":feature ";
+        continue;
+      }
+      std::vector<int> edge, nu, nv, common, apex;
+      e.edge_triangles(u, v, edge);
+      e.neighbours(u, nu);
+      e.neighbours(v, nv);
+      std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+      for (int x : edge) apex.push_back(Editor::opposite(e.s_.triangles[x], u, v));
+      std::sort(apex.begin(), apex.end());
+      apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
+      if (common != apex) {
+        r += k + ":link ";
+        continue;
+      }
+      if (!collapse_allowed(e, u, v, 0.0, 12.0, false)) {
+        r += k + ":geometry ";
+        continue;
+      }
+      r += k + ":validity ";
+    }
+    if (e.s_.features[a].kind == VertexFeature::Contact && e.s_.features[b].kind == VertexFeature::Contact) {
+      char buf[96];
+      snprintf(buf, sizeof buf, " same%d line%d len%.1f", e.s_.features[a].id == e.s_.features[b].id, e.is_line_edge(a, b) ? 1 : 0,
+               std::floor(10 * edges[0].first / e.mean_edge_) / 10);
+      r += buf;
+    }
+    ++why[shape + " " + r];
+  }
+  for (const auto& [k, n] : why) fprintf(stderr, "[needles] %4d %s\n", n, k.c_str());
 }
 
 }  // namespace
@@ -648,31 +1877,95 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
                        const CleanupOptions& options) {
   CleanupReport report;
   Editor e(surface, input);
-  report.valence3_removed += remove_valence3(e);
-  merge_close_features(e, options.min_feature, report);
+  auto clock0 = std::chrono::steady_clock::now();
+  auto stage = [&](const char* name) { if (!getenv("STAGE_DEBUG")) return; auto now = std::chrono::steady_clock::now(); fprintf(stderr, "[stage] %-28s %.3f s\n", name, std::chrono::duration<double>(now - clock0).count()); clock0 = now; };
+  e.projector_ = &projector;
+  e.tolerance_ = options.fidelity_tolerance;
+  if (getenv("CLEANUP_DEBUG")) {
+    const auto c = e.census();
+    fprintf(stderr, "[cleanup] built: holes %d leaks %d crossings %d degenerate %d pinches %d\n", c.count.holes,
+            c.count.leaks, c.count.crossings, c.count.degenerate, c.count.pinches);
+  }
+  // Folds along contacts and needles first: they are most of what the mesh building leaves
+  // invalid, and d_min merges need valid surroundings to be accepted.
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+  stage("report.needles_collapsed += ");
+  report.valence3_removed += remove_valence3(e);
+  stage("report.valence3_removed += r");
+  merge_close_features(e, projector, options.min_feature, report);
+  stage("merge_close_features(e, proj");
+  report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+  stage("report.needles_collapsed += ");
   report.flips += flip_edges(e, options.flip_flatness_deg);
+  stage("report.flips += flip_edges(e");
   for (int i = 0; i < options.smoothing_iterations; ++i) {
     smooth(e, projector);
+    stage("smooth(e, projector);");
     report.flips += flip_edges(e, options.flip_flatness_deg);
+    stage("report.flips += flip_edges(e");
     ++report.smoothing_passes;
   }
   report.valence3_removed += remove_valence3(e);
+  stage("report.valence3_removed += r");
+  // Smoothing brings some features closer than d_min, and the first merges open the way to others.
+  merge_close_features(e, projector, options.min_feature, report);
+  stage("merge_close_features(e, proj");
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+  stage("report.needles_collapsed += ");
   report.flips += flip_edges(e, options.flip_flatness_deg);
+  stage("report.flips += flip_edges(e");
   smooth(e, projector);
+  stage("smooth(e, projector);");
   if (options.fidelity_tolerance > 0.0) {
     const ContactArcs arcs(input);
     for (int round = 0; round < 3; ++round) {
-      const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance);
+      const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance) +
+                         refine_toward_input(e, options.fidelity_tolerance);
       report.fidelity_splits += splits;
+      stage("report.fidelity_splits += sp");
       if (splits == 0) break;
       report.flips += flip_edges(e, options.flip_flatness_deg);
+      stage("report.flips += flip_edges(e");
       smooth(e, projector);
+      stage("smooth(e, projector);");
       report.flips += flip_edges(e, options.flip_flatness_deg);
+      stage("report.flips += flip_edges(e");
+    }
+    merge_close_features(e, projector, options.min_feature, report);
+    stage("merge_close_features(e, proj");
+    report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+    stage("report.needles_collapsed += ");
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+    stage("report.flips += flip_edges(e");
+  }
+  for (int i = 0; i < options.angle_passes; ++i) {
+    const int moved = optimize_angles(e, projector, 30.0);
+    stage("optimize_angles");
+    if (moved == 0) break;
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+    stage("flips after angles");
+  }
+  if (options.quality_refinement_rounds > 0) {
+    for (int round = 0; round < options.quality_refinement_rounds; ++round) {
+      const int splits = refine_bad_triangles(e, projector, 30.0, 0.5 * e.mean_edge_);
+      report.quality_splits += splits;
+      stage("report.quality_splits += spl");
+      if (splits == 0) break;
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+      stage("report.flips += flip_edges(e");
+      smooth(e, projector);
+      stage("smooth(e, projector);");
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+      stage("report.flips += flip_edges(e");
+      smooth(e, projector);
+      stage("smooth(e, projector);");
+      report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
+      stage("report.needles_collapsed += ");
     }
   }
-  if (options.resolve_intersections) resolve_intersections(e, projector, options, report);
+  if (options.resolve_intersections) repair(e, projector, options, report);
+  stage("if (options.resolve_intersec");
+  if (getenv("NEEDLE_DEBUG")) debug_needles(e, atof(getenv("NEEDLE_DEBUG")));
   e.finish();
   return report;
 }

@@ -25,6 +25,12 @@ struct CleanupOptions {
   /// whose middle strays farther than this from their input part, are split (the farthest input
   /// contact vertex is kept). 0 disables it.
   double fidelity_tolerance = 0.0;
+  /// Rounds of refinement of the triangles with an angle below 30 degrees (split of their longest
+  /// edge, then flips and smoothing). 0 disables it.
+  int quality_refinement_rounds = 0;
+  /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
+  /// angle around them is largest (after the smoothing).
+  int angle_passes = 8;
 };
 
 struct CleanupReport {
@@ -35,7 +41,12 @@ struct CleanupReport {
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed
   int intersections_found = 0;  // intersecting triangle pairs before they were resolved
   int intersections_left = 0;   // pairs that could not be resolved
+  int holes_left = 0;           // edges with one triangle where the input has no free border
+  int leaks_left = 0;           // edges whose radial order mixes input regions (see mesh_cleanup.cpp)
+  int degenerate_left = 0;      // collinear triangles
+  int pinches_left = 0;         // vertices where a part touches itself (extra fans)
   int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
+  int quality_splits = 0;       // edges of triangles with an angle below 30 degrees split
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature
 };
 

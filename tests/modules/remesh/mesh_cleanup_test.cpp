@@ -54,9 +54,13 @@ TEST(MeshCleanup, SmoothingImprovesJitteredMeshAndKeepsFeatures) {
   for (size_t v = 0; v < s.vertices.size(); ++v) {
     const VertexFeature f = s.features[v];
     const Vec3 x = s.vertices[v];
-    if (f.kind == VertexFeature::Surface) EXPECT_LT(projector.distance_to_part(f.id, x), 1e-9);
-    if (f.kind == VertexFeature::Contact) EXPECT_LT((projector.on_contact(f.id, x) - x).norm(), 1e-9);
-    if (f.kind == VertexFeature::Corner) EXPECT_EQ(x, input.vertices[input.corners[f.id].vertex]);
+    if (f.kind == VertexFeature::Surface) {
+      EXPECT_LT(projector.distance_to_part(f.id, x), 1e-9);
+    } else if (f.kind == VertexFeature::Contact) {
+      EXPECT_LT((projector.on_contact(f.id, x) - x).norm(), 1e-9);
+    } else if (f.kind == VertexFeature::Corner) {
+      EXPECT_EQ(x, input.vertices[input.corners[f.id].vertex]);
+    }
   }
   // Still the same sealed model: rebuild it from the cleaned triangles.
   SurfaceSoup soup;
