@@ -84,33 +84,8 @@ class MeshBuilder {
     assign_representatives();
     if (options_.merge_contact_slivers) remove_contact_slivers();
     emit_polygons();
-    if (getenv("BUILD_DEBUG_CORNER")) debug_corner(atoi(getenv("BUILD_DEBUG_CORNER")));
     assemble();
     return std::move(result_);
-  }
-
-  void debug_corner(int corner) {
-    for (int s = 0; s < rvd_.num_seeds(); ++s)
-      for (int k = rvd_.seed_corners[s]; k < rvd_.seed_corners[s + 1]; ++k)
-        if (rvd_.corners[k] == corner) {
-          fprintf(stderr, "corner %d in seed %d\n", corner, s);
-          for (size_t b = 0; b < contact_components_.size(); ++b) {
-            const ContactComponent& bc = contact_components_[b];
-            if (bc.seed != s) continue;
-            fprintf(stderr, "  BC %zu contact %d length %.1f corners:", b, bc.contact, bc.length);
-            for (int c : bc.corners) fprintf(stderr, " %d", c);
-            fprintf(stderr, " point %d (root %d feature %d/%d)\n", bc.point, find(bc.point), points_[find(bc.point)].feature.kind, points_[find(bc.point)].feature.id);
-          }
-          for (size_t c = 0; c < components_.size(); ++c) {
-            const CellComponent& cc = components_[c];
-            if (cc.seed != s) continue;
-            fprintf(stderr, "  CC %zu part %s area %.0f BCs:", c, input_.parts[cc.part].name.c_str(), cc.area);
-            for (int b : cc.contact_components) fprintf(stderr, " %d", b);
-            fprintf(stderr, " point %d\n   cycle:", cc.point);
-            for (int e : cc.boundary) fprintf(stderr, " [%d>%d n%d k%d r%d/%d]", edges_[e].from, edges_[e].to, edges_[e].neighbour, edges_[e].contact, edges_[e].rep_start, edges_[e].rep_end);
-            fprintf(stderr, "\n");
-          }
-        }
   }
 
  private:

@@ -1,7 +1,6 @@
 #include "modules/remesh/mesh_cleanup.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -675,11 +674,6 @@ bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, E
     e.rollback();
     return false;
   }
-  static const bool accept_all = getenv("ACCEPT_ALL") != nullptr;
-  if (accept_all && !strict) {
-    e.commit();
-    return true;
-  }
   const Violations after = e.violations(affected_after);
   if (after.total() == 0 && !strict) {
     e.commit();
@@ -687,10 +681,6 @@ bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, E
   }
   e.rollback();
   const Violations before = e.violations(affected_before);
-  if (getenv("TX_DEBUG") && strict)
-    fprintf(stderr, "[tx] before h%d l%d c%d d%d p%d after h%d l%d c%d d%d p%d\n", before.holes, before.leaks,
-            before.crossings, before.degenerate, before.pinches, after.holes, after.leaks, after.crossings,
-            after.degenerate, after.pinches);
   if (!Editor::acceptable(before, after, strict)) return false;
   e.begin();
   affected_after.clear();
@@ -1039,18 +1029,10 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
     report.merges.insert(report.merges.end(), merged.begin(), merged.end());
     return true;
   };
-  int whole = 0, single = 0;
   for (const std::vector<int>& members : stretches) {
-    if (merge(members)) {
-      ++whole;
-      continue;
-    }
-    if (members.size() == 1) continue;
-    for (int i : members) single += merge({i}) ? 1 : 0;
+    if (merge(members) || members.size() == 1) continue;
+    for (int i : members) merge({i});
   }
-  if (getenv("CLEANUP_DEBUG"))
-    fprintf(stderr, "[merge] %d candidates, %zu stretches, %d merged whole, %d alone\n", n, stretches.size(), whole,
-            single);
 }
 
 // Collapses the shortest possible edge of triangles with an angle below `needle_angle` and of
@@ -1674,19 +1656,6 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
     if (!alive) continue;
     std::vector<int> before;
     e.stars(verts, before);
-    if (getenv("CLEANUP_DEBUG")) {
-      std::vector<int> et;
-      for (int t : tris) {
-        const Triangle& f = e.s_.triangles[t];
-        fprintf(stderr, "[patch] tri %d part %d (%d %d %d)\n", t, e.s_.triangle_part[t], f[0], f[1], f[2]);
-        for (int i = 0; i < 3; ++i) {
-          e.edge_triangles(f[i], f[(i + 1) % 3], et);
-          fprintf(stderr, "   edge %d-%d:", f[i], f[(i + 1) % 3]);
-          for (int x : et) fprintf(stderr, " %d(p%d)", x, e.s_.triangle_part[x]);
-          fprintf(stderr, "\n");
-        }
-      }
-    }
     if (transact(e, before, true, [&](std::vector<int>& after) {
           for (int t : tris) e.kill(t);
           e.stars(verts, after);
@@ -1805,11 +1774,6 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
       if (recover_edge(e, a, b)) ++report.flips;
     }
     Editor::Census next = e.census();
-    if (getenv("CLEANUP_DEBUG"))
-      fprintf(stderr, "[repair] round %d: holes %d leaks %d crossings %d degenerate %d pinches %d -> %d %d %d %d %d\n",
-              round, census.count.holes, census.count.leaks, census.count.crossings, census.count.degenerate,
-              census.count.pinches, next.count.holes, next.count.leaks, next.count.crossings, next.count.degenerate,
-              next.count.pinches);
     const bool progress = next.count.total() < census.count.total();
     census = std::move(next);
     if (!progress) break;
@@ -1821,151 +1785,65 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
   report.pinches_left = census.count.pinches;
 }
 
-// DEBUG (temporary): why the needles left are not collapsed.
-void debug_needles(Editor& e, double below) {
-  std::map<std::string, int> why;
-  for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
-    const int t = static_cast<int>(ti);
-    if (!e.alive(t) || e.min_angle(t) >= below) continue;
-    const Triangle f = e.s_.triangles[t];
-    const TriangleQuality q = measure_triangle(e.p(f[0]), e.p(f[1]), e.p(f[2]));
-    std::array<std::pair<double, int>, 3> edges;
-    for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).norm(), i};
-    std::sort(edges.begin(), edges.end());
-    std::string shape = q.max_angle_deg > 150 ? "cap" : "needle";
-    const int a = f[edges[0].second], b = f[(edges[0].second + 1) % 3];
-    std::string r;
-    for (auto [u, v] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
-      std::string k = "SKC"[e.s_.features[u].kind] + std::string(e.s_.features[u].pinned ? "*" : "") + ">" +
-                      "SKC"[e.s_.features[v].kind] + std::string(e.s_.features[v].pinned ? "*" : "");
-      if (!feature_allows_collapse(e, u, v, 0.0, false)) {
-        r += k + ":feature ";
-        continue;
-      }
-      std::vector<int> edge, nu, nv, common, apex;
-      e.edge_triangles(u, v, edge);
-      e.neighbours(u, nu);
-      e.neighbours(v, nv);
-      std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
-      for (int x : edge) apex.push_back(Editor::opposite(e.s_.triangles[x], u, v));
-      std::sort(apex.begin(), apex.end());
-      apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
-      if (common != apex) {
-        r += k + ":link ";
-        continue;
-      }
-      if (!collapse_allowed(e, u, v, 0.0, 12.0, false)) {
-        r += k + ":geometry ";
-        continue;
-      }
-      r += k + ":validity ";
-    }
-    if (e.s_.features[a].kind == VertexFeature::Contact && e.s_.features[b].kind == VertexFeature::Contact) {
-      char buf[96];
-      snprintf(buf, sizeof buf, " same%d line%d len%.1f", e.s_.features[a].id == e.s_.features[b].id, e.is_line_edge(a, b) ? 1 : 0,
-               std::floor(10 * edges[0].first / e.mean_edge_) / 10);
-      r += buf;
-    }
-    ++why[shape + " " + r];
-  }
-  for (const auto& [k, n] : why) fprintf(stderr, "[needles] %4d %s\n", n, k.c_str());
-}
-
 }  // namespace
 
 CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
                        const CleanupOptions& options) {
   CleanupReport report;
   Editor e(surface, input);
-  auto clock0 = std::chrono::steady_clock::now();
-  auto stage = [&](const char* name) { if (!getenv("STAGE_DEBUG")) return; auto now = std::chrono::steady_clock::now(); fprintf(stderr, "[stage] %-28s %.3f s\n", name, std::chrono::duration<double>(now - clock0).count()); clock0 = now; };
   e.projector_ = &projector;
   e.tolerance_ = options.fidelity_tolerance;
-  if (getenv("CLEANUP_DEBUG")) {
-    const auto c = e.census();
-    fprintf(stderr, "[cleanup] built: holes %d leaks %d crossings %d degenerate %d pinches %d\n", c.count.holes,
-            c.count.leaks, c.count.crossings, c.count.degenerate, c.count.pinches);
-  }
   // Folds along contacts and needles first: they are most of what the mesh building leaves
   // invalid, and d_min merges need valid surroundings to be accepted.
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-  stage("report.needles_collapsed += ");
   report.valence3_removed += remove_valence3(e);
-  stage("report.valence3_removed += r");
   merge_close_features(e, projector, options.min_feature, report);
-  stage("merge_close_features(e, proj");
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-  stage("report.needles_collapsed += ");
   report.flips += flip_edges(e, options.flip_flatness_deg);
-  stage("report.flips += flip_edges(e");
   for (int i = 0; i < options.smoothing_iterations; ++i) {
     smooth(e, projector);
-    stage("smooth(e, projector);");
     report.flips += flip_edges(e, options.flip_flatness_deg);
-    stage("report.flips += flip_edges(e");
     ++report.smoothing_passes;
   }
   report.valence3_removed += remove_valence3(e);
-  stage("report.valence3_removed += r");
   // Smoothing brings some features closer than d_min, and the first merges open the way to others.
   merge_close_features(e, projector, options.min_feature, report);
-  stage("merge_close_features(e, proj");
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-  stage("report.needles_collapsed += ");
   report.flips += flip_edges(e, options.flip_flatness_deg);
-  stage("report.flips += flip_edges(e");
   smooth(e, projector);
-  stage("smooth(e, projector);");
   if (options.fidelity_tolerance > 0.0) {
     const ContactArcs arcs(input);
     for (int round = 0; round < 3; ++round) {
       const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance) +
                          refine_toward_input(e, options.fidelity_tolerance);
       report.fidelity_splits += splits;
-      stage("report.fidelity_splits += sp");
       if (splits == 0) break;
       report.flips += flip_edges(e, options.flip_flatness_deg);
-      stage("report.flips += flip_edges(e");
       smooth(e, projector);
-      stage("smooth(e, projector);");
       report.flips += flip_edges(e, options.flip_flatness_deg);
-      stage("report.flips += flip_edges(e");
     }
     merge_close_features(e, projector, options.min_feature, report);
-    stage("merge_close_features(e, proj");
     report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-    stage("report.needles_collapsed += ");
     report.flips += flip_edges(e, options.flip_flatness_deg);
-    stage("report.flips += flip_edges(e");
   }
   for (int i = 0; i < options.angle_passes; ++i) {
     const int moved = optimize_angles(e, projector, 30.0);
-    stage("optimize_angles");
     if (moved == 0) break;
     report.flips += flip_edges(e, options.flip_flatness_deg);
-    stage("flips after angles");
   }
   if (options.quality_refinement_rounds > 0) {
     for (int round = 0; round < options.quality_refinement_rounds; ++round) {
       const int splits = refine_bad_triangles(e, projector, 30.0, 0.5 * e.mean_edge_);
       report.quality_splits += splits;
-      stage("report.quality_splits += spl");
       if (splits == 0) break;
       report.flips += flip_edges(e, options.flip_flatness_deg);
-      stage("report.flips += flip_edges(e");
       smooth(e, projector);
-      stage("smooth(e, projector);");
       report.flips += flip_edges(e, options.flip_flatness_deg);
-      stage("report.flips += flip_edges(e");
       smooth(e, projector);
-      stage("smooth(e, projector);");
       report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-      stage("report.needles_collapsed += ");
     }
   }
   if (options.resolve_intersections) repair(e, projector, options, report);
-  stage("if (options.resolve_intersec");
-  if (getenv("NEEDLE_DEBUG")) debug_needles(e, atof(getenv("NEEDLE_DEBUG")));
   e.finish();
   return report;
 }

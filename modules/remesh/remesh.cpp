@@ -1,7 +1,10 @@
 #include "modules/remesh/remesh.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
+#include <iterator>
+#include <set>
 
 #include "framework/core/error.h"
 #include "framework/model/model_builder.h"
@@ -110,18 +113,27 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
     report->output_region_of_input = output_of_input;
     bool preserved = out.regions.size() == input.regions.size();
     for (int r : output_of_input) preserved = preserved && r >= 0;
-    if (preserved) {
-      // Same adjacency, through the matching.
-      const auto a_in = input.region_adjacency();
-      const auto a_out = out.region_adjacency();
-      for (size_t r = 0; r < input.regions.size() && preserved; ++r) {
-        std::vector<int> mapped;
-        for (int n : a_in[r]) mapped.push_back(output_of_input[n]);
-        std::sort(mapped.begin(), mapped.end());
-        preserved = mapped == a_out[output_of_input[r]];
+    // Adjacency through the matching: pairs of input regions that touch in one model only.
+    const auto a_in = input.region_adjacency();
+    const auto a_out = out.region_adjacency();
+    std::vector<int> input_of_output(out.regions.size(), -1);
+    for (size_t r = 0; r < output_of_input.size(); ++r)
+      if (output_of_input[r] >= 0) input_of_output[output_of_input[r]] = static_cast<int>(r);
+    std::set<std::pair<int, int>> touch_in, touch_out;
+    for (size_t r = 0; r < a_in.size(); ++r)
+      for (int n : a_in[r])
+        if (static_cast<int>(r) < n && output_of_input[r] >= 0 && output_of_input[n] >= 0)
+          touch_in.insert({static_cast<int>(r), n});
+    for (size_t r = 0; r < a_out.size(); ++r)
+      for (int n : a_out[r]) {
+        const int a = input_of_output[r], b = input_of_output[n];
+        if (a >= 0 && b >= 0 && a < b) touch_out.insert({a, b});
       }
-    }
-    report->regions_preserved = preserved;
+    std::set_difference(touch_in.begin(), touch_in.end(), touch_out.begin(), touch_out.end(),
+                        std::back_inserter(report->contacts_lost));
+    std::set_difference(touch_out.begin(), touch_out.end(), touch_in.begin(), touch_in.end(),
+                        std::back_inserter(report->contacts_gained));
+    report->regions_preserved = preserved && report->contacts_lost.empty() && report->contacts_gained.empty();
   }
   return out;
 }

@@ -43,6 +43,9 @@ struct TopologyReport {
   FeatureCounts input, output;
   bool regions_preserved = false;   // same count and adjacency, matched by their sides
   std::vector<int> output_region_of_input;  // -1 when an input region was lost
+  /// Pairs of input regions (a < b, both kept) that touch in the input but not in the output,
+  /// and the other way round.
+  std::vector<std::pair<int, int>> contacts_lost, contacts_gained;
   std::vector<FeatureMerge> merges;
 };
 

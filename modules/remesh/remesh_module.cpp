@@ -92,7 +92,7 @@ class RemeshModule final : public Module {
                      "split where the remesh strays farther than this from the input "
                      "(default: 0.1 x the mean edge length; 0: off)",
                      0.0));
-    p.push_back(spec("no-cleanup", ParameterType::Bool, false, "skip the clean-up (valence-3, needles, flips, smoothing)"));
+    p.push_back(spec("cleanup", ParameterType::Bool, true, "clean the dual mesh up: valence-3 vertices, needles, flips, smoothing, repairs (--no-cleanup keeps the raw dual mesh)"));
     p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
                      "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
     return p;
@@ -122,7 +122,7 @@ class RemeshModule final : public Module {
         parameters.has("min-feature") ? parameters.get_double("min-feature") : -kDefaultMinFeatureFactor;
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
-    remesh_options.clean_up = !parameters.get_bool("no-cleanup");
+    remesh_options.clean_up = parameters.get_bool("cleanup");
     SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
     // The seeds are written before mesh building, so that they are there whatever happens next.
     if (parameters.has("dump-seeds")) {
@@ -170,15 +170,27 @@ class RemeshModule final : public Module {
                          {"fidelity_splits", result.cleanup.fidelity_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},
                          {"intersections_found", result.cleanup.intersections_found},
-                         {"intersections_left", result.cleanup.intersections_left}};
+                         {"intersections_left", result.cleanup.intersections_left},
+                         {"holes_left", result.cleanup.holes_left},
+                         {"leaks_left", result.cleanup.leaks_left},
+                         {"degenerate_left", result.cleanup.degenerate_left},
+                         {"pinches_left", result.cleanup.pinches_left}};
     report["min_feature"] = result.min_feature;
     report["contact_slivers_removed"] = result.build.contact_slivers_removed;
     report["sharp_points"] = result.build.sharp_points;
     if (result.cleanup.intersections_left > 0)
       context.log.warning("remesh: " + std::to_string(result.cleanup.intersections_left) +
                           " pairs of triangles still intersect (run `voroseal check` on the output)");
+    const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +
+                        result.cleanup.pinches_left;
+    if (invalid > 0)
+      context.log.warning("remesh: the clean-up left " + std::to_string(result.cleanup.holes_left) + " holes, " +
+                          std::to_string(result.cleanup.leaks_left) + " leaks, " +
+                          std::to_string(result.cleanup.degenerate_left) + " degenerate triangles and " +
+                          std::to_string(result.cleanup.pinches_left) +
+                          " pinched vertices (run `voroseal check` on the output)");
     report["topology"] = topology_json(result.topology, *context.model);
-    print_topology(context.log, result.topology);
+    print_topology(context.log, result.topology, *context.model);
 
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
     if (parameters.has("output")) {
@@ -217,18 +229,40 @@ class RemeshModule final : public Module {
                         {"location", {x.x(), x.y(), x.z()}},
                         {"features", features_json(m.features)}});
     }
+    nlohmann::json lost = nlohmann::json::array();
+    for (int r : lost_regions(t))
+      lost.push_back({{"index", r}, {"name", input.regions[static_cast<size_t>(r)].name}});
     return {{"before", counts(t.input)},
             {"after", counts(t.output)},
             {"regions_preserved", t.regions_preserved},
+            {"regions_lost", lost},
+            {"region_contacts_lost", t.contacts_lost},
+            {"region_contacts_gained", t.contacts_gained},
             {"merges", merges}};
   }
-  static void print_topology(const Logger& log, const TopologyReport& t) {
+  // Input regions with no output region: thinner than the resolution, or merged with a neighbour.
+  static std::vector<int> lost_regions(const TopologyReport& t) {
+    std::vector<int> lost;
+    for (size_t r = 0; r < t.output_region_of_input.size(); ++r)
+      if (t.output_region_of_input[r] < 0) lost.push_back(static_cast<int>(r));
+    return lost;
+  }
+  static void print_topology(const Logger& log, const TopologyReport& t, const StructuralModel& input) {
     char line[256];
     std::snprintf(line, sizeof line, "remesh: surfaces %d -> %d, contacts %d -> %d, corners %d -> %d, regions %d -> %d%s",
                   t.input.surfaces, t.output.surfaces, t.input.contacts, t.output.contacts, t.input.corners,
                   t.output.corners, t.input.regions, t.output.regions,
                   t.regions_preserved ? " (regions and their adjacency preserved)" : " (REGIONS CHANGED)");
     log.info(line);
+    for (int r : lost_regions(t))
+      log.warning("remesh: input region " + std::to_string(r) + " '" + input.regions[static_cast<size_t>(r)].name +
+                  "' has no region of its own in the output (thinner than the resolution, or merged with a "
+                  "neighbour): try a finer --edge-length or a smaller --min-feature");
+    auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
+    for (const auto& [a, b] : t.contacts_lost)
+      log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the input, not in the output");
+    for (const auto& [a, b] : t.contacts_gained)
+      log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the output, not in the input");
     if (!t.merges.empty())
       log.info("remesh: " + std::to_string(t.merges.size()) +
                " features merged where the resolution is coarser than them (see the JSON report)");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -53,10 +54,37 @@ TEST(Remesh, BoxWithHorizonKeepsEverything) {
   EXPECT_EQ(out.corners.size(), input.corners.size());
   ASSERT_EQ(out.regions.size(), 2u);
   EXPECT_TRUE(r.topology.regions_preserved);
+  EXPECT_TRUE(r.topology.contacts_lost.empty());
+  EXPECT_TRUE(r.topology.contacts_gained.empty());
   for (const Region& reg : out.regions) EXPECT_NEAR(-out.signed_volume(reg.sides), 0.5, 1e-6);
   const EdgeCounts e = count_edges(out);
   EXPECT_EQ(e.border, 0);
   EXPECT_GT(mean_quality(out), 0.85);
+}
+
+// A flat layer a hundred times thinner than the edge length: its contacts are closer than d_min,
+// but merging them would join the two regions, so they stay. Only its corners, linked by contacts
+// shorter than a cell, merge with the box corners (paper Fig. 11b), which pinches the layer there
+// (a volume of a few 1e-6 goes).
+TEST(Remesh, KeepsAFlatLayerThinnerThanTheResolution) {
+  SurfaceSoup soup = test::lattice_box(12, true);
+  for (Vec3& p : soup.points) p.z() = p.z() <= 0.5 ? 1.998 * p.z() : 0.999 + 0.002 * (p.z() - 0.5);
+  const StructuralModel input = build_model(soup);
+  ASSERT_EQ(input.regions.size(), 2u);
+  Logger log(LogLevel::Warning);
+  Progress progress(false);
+  RemeshOptions options;
+  options.seeds.num_seeds = 600;
+  const RemeshResult r = remesh(input, options, log, progress);
+  EXPECT_TRUE(r.topology.regions_preserved);
+  ASSERT_EQ(r.model.regions.size(), 2u);
+  std::vector<double> volumes;
+  for (const Region& reg : r.model.regions) volumes.push_back(-r.model.signed_volume(reg.sides));
+  std::sort(volumes.begin(), volumes.end());
+  EXPECT_NEAR(volumes[0] + volumes[1], 1.0, 1e-5);
+  EXPECT_NEAR(volumes[0], 0.001, 1e-5);
+  EXPECT_EQ(count_edges(r.model).border, 0);
+  EXPECT_EQ(r.cleanup.intersections_left, 0);
 }
 
 }  // namespace
