@@ -32,8 +32,17 @@ struct Violations {
   int crossings = 0;   // pairs of triangles that intersect (exact predicates)
   int degenerate = 0;  // triangles with collinear vertices
   int pinches = 0;     // extra fans of a part around a vertex (the part touches itself there)
-  int total() const { return holes + leaks + crossings + degenerate + pinches; }
+  int folds = 0;       // wedges thinner than kFoldDeg between consecutive triangles around a
+                       // contact edge: a triangle lying on another part, which leaves a volume of
+                       // no thickness there (and flat tetrahedra in any volume mesh)
+  int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
 };
+
+// The input's contacts meet at wedges of several degrees; thinner wedges are made by the remesh.
+constexpr double kFoldDeg = 5.0;
+// Triangles with a larger angle, or a smaller one, are as bad as degenerate ones.
+constexpr double kCapDeg = 170.0;
+constexpr double kNeedleDeg = 5.0;
 
 // Uniform grid of triangle bounding boxes: the candidates of the local intersection tests.
 // Entries are only added; a triangle that moved is inserted again and stale entries are
@@ -318,6 +327,7 @@ class Editor {
         ++out.degenerate;
         continue;
       }
+      if (cap(t)) ++out.degenerate;
       Vec3 lo, hi;
       box(t, lo, hi);
       ++query_epoch_;
@@ -378,6 +388,7 @@ class Editor {
         c.degenerate.push_back(static_cast<int>(t));
         continue;
       }
+      if (cap(static_cast<int>(t))) c.degenerate.push_back(static_cast<int>(t));
       index.push_back(static_cast<int>(t));
       tris.push_back(s_.triangles[t]);
     }
@@ -401,9 +412,10 @@ class Editor {
       if (!plain) {
         Violations v;
         edge_violations(a, b, v);
-        if (v.holes + v.leaks > 0) c.edges.push_back({a, b});
+        if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
         c.count.holes += v.holes;
         c.count.leaks += v.leaks;
+        c.count.folds += v.folds;
       }
       i = j;
     }
@@ -542,6 +554,13 @@ class Editor {
     grid_.insert(t, lo, hi);
   }
   bool degenerate(int t) const { return is_degenerate(s_.vertices, s_.triangles[t]); }
+  // Nearly flat (a cap or a needle of a tiny edge): counted with the degenerate triangles, as a
+  // tet mesh keeping it has a flat tet, though its crossings can still be tested.
+  bool cap(int t) const {
+    const Triangle& f = s_.triangles[t];
+    const TriangleQuality q = measure_triangle(p(f[0]), p(f[1]), p(f[2]));
+    return q.max_angle_deg > kCapDeg || q.min_angle_deg < kNeedleDeg;
+  }
   // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
   // vertices on the same side). With opposite directions along the edge (consistent
   // orientation) and normals clearly on the same side they cannot: a cheap answer for the
@@ -629,9 +648,12 @@ class Editor {
       fan_.push_back({std::atan2(w.dot(v), w.dot(u)), t, has_directed_edge(f, a, b)});
     }
     std::sort(fan_.begin(), fan_.end(), [](const Blade& x, const Blade& y) { return x.angle < y.angle; });
+    const double fold = kFoldDeg * M_PI / 180.0;
     for (size_t i = 0; i < k; ++i) {
       const Blade& lo = fan_[i];
       const Blade& hi = fan_[(i + 1) % k];
+      const double wedge = i + 1 < k ? hi.angle - lo.angle : hi.angle + 2.0 * M_PI - lo.angle;
+      if (wedge < fold) ++out.folds;
       const auto& rl = part_regions_[s_.triangle_part[lo.triangle]];
       const auto& rh = part_regions_[s_.triangle_part[hi.triangle]];
       // The side of `lo` facing increasing angles, the side of `hi` facing decreasing ones.
@@ -1783,6 +1805,7 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
   report.leaks_left = census.count.leaks;
   report.degenerate_left = census.count.degenerate;
   report.pinches_left = census.count.pinches;
+  report.folds_left = census.count.folds;
 }
 
 }  // namespace

@@ -45,6 +45,7 @@ struct CleanupReport {
   int leaks_left = 0;           // edges whose radial order mixes input regions (see mesh_cleanup.cpp)
   int degenerate_left = 0;      // collinear triangles
   int pinches_left = 0;         // vertices where a part touches itself (extra fans)
+  int folds_left = 0;           // wedges of a few degrees at contact edges (a triangle on another part)
   int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
   int quality_splits = 0;       // edges of triangles with an angle below 30 degrees split
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature

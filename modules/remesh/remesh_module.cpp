@@ -174,7 +174,8 @@ class RemeshModule final : public Module {
                          {"holes_left", result.cleanup.holes_left},
                          {"leaks_left", result.cleanup.leaks_left},
                          {"degenerate_left", result.cleanup.degenerate_left},
-                         {"pinches_left", result.cleanup.pinches_left}};
+                         {"pinches_left", result.cleanup.pinches_left},
+                         {"folds_left", result.cleanup.folds_left}};
     report["min_feature"] = result.min_feature;
     report["contact_slivers_removed"] = result.build.contact_slivers_removed;
     report["sharp_points"] = result.build.sharp_points;
@@ -182,13 +183,14 @@ class RemeshModule final : public Module {
       context.log.warning("remesh: " + std::to_string(result.cleanup.intersections_left) +
                           " pairs of triangles still intersect (run `voroseal check` on the output)");
     const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +
-                        result.cleanup.pinches_left;
+                        result.cleanup.pinches_left + result.cleanup.folds_left;
     if (invalid > 0)
       context.log.warning("remesh: the clean-up left " + std::to_string(result.cleanup.holes_left) + " holes, " +
                           std::to_string(result.cleanup.leaks_left) + " leaks, " +
-                          std::to_string(result.cleanup.degenerate_left) + " degenerate triangles and " +
-                          std::to_string(result.cleanup.pinches_left) +
-                          " pinched vertices (run `voroseal check` on the output)");
+                          std::to_string(result.cleanup.degenerate_left) + " degenerate triangles, " +
+                          std::to_string(result.cleanup.pinches_left) + " pinched vertices and " +
+                          std::to_string(result.cleanup.folds_left) +
+                          " folds at contacts (run `voroseal check` on the output)");
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 

@@ -63,9 +63,11 @@ TEST(Remesh, BoxWithHorizonKeepsEverything) {
 }
 
 // A flat layer a hundred times thinner than the edge length: its contacts are closer than d_min,
-// but merging them would join the two regions, so they stay. Only its corners, linked by contacts
-// shorter than a cell, merge with the box corners (paper Fig. 11b), which pinches the layer there
-// (a volume of a few 1e-6 goes).
+// but merging them would join the two regions, so the layer stays a region. Its side walls can
+// only be covered by caps (triangles 0.001 high and an edge length wide), which the clean-up
+// treats as degenerate: where it can, it merges their vertices, which pinches the layer along
+// the box edges, at its corners (paper Fig. 11b) and a little along its sides. The box keeps its
+// shape to a fraction of the layer's thickness.
 TEST(Remesh, KeepsAFlatLayerThinnerThanTheResolution) {
   SurfaceSoup soup = test::lattice_box(12, true);
   for (Vec3& p : soup.points) p.z() = p.z() <= 0.5 ? 1.998 * p.z() : 0.999 + 0.002 * (p.z() - 0.5);
@@ -81,8 +83,9 @@ TEST(Remesh, KeepsAFlatLayerThinnerThanTheResolution) {
   std::vector<double> volumes;
   for (const Region& reg : r.model.regions) volumes.push_back(-r.model.signed_volume(reg.sides));
   std::sort(volumes.begin(), volumes.end());
-  EXPECT_NEAR(volumes[0] + volumes[1], 1.0, 1e-5);
-  EXPECT_NEAR(volumes[0], 0.001, 1e-5);
+  EXPECT_NEAR(volumes[0] + volumes[1], 1.0, 2e-4);
+  EXPECT_GT(volumes[0], 0.0008);
+  EXPECT_LT(volumes[0], 0.001 + 1e-9);
   EXPECT_EQ(count_edges(r.model).border, 0);
   EXPECT_EQ(r.cleanup.intersections_left, 0);
 }
