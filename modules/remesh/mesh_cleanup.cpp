@@ -1355,7 +1355,7 @@ int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_d
   for (size_t t = 0; t < e.s_.triangles.size(); ++t)
     if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < angle_deg)
       for (int v : e.s_.triangles[t]) wanted[v] = 1;
-  Vec3 x;
+  Vec3 x = Vec3::Zero();
   int count = 0;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
@@ -1687,44 +1687,6 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
   }
 }
 
-// Splits the longest edge of triangles with an angle below `angle_deg` at its middle (moved
-// onto the feature it lies on: the contact both ends sample, else the part), when that edge is
-// longer than `min_length`: a needle in a strip between two contacts narrower than the edges
-// becomes two better triangles, and flips and smoothing spread the new vertices (a sizing that
-// follows the local feature size, as in Delaunay refinement).
-int refine_bad_triangles(Editor& e, const SurfaceProjector& projector, double angle_deg, double min_length) {
-  int splits = 0;
-  const size_t n = e.s_.triangles.size();
-  for (size_t ti = 0; ti < n; ++ti) {
-    const int t = static_cast<int>(ti);
-    if (!e.alive(t) || e.min_angle(t) >= angle_deg) continue;
-    const Triangle f = e.s_.triangles[t];
-    int best = -1;
-    double longest = 0;
-    for (int i = 0; i < 3; ++i) {
-      const double len = (e.p(f[i]) - e.p(f[(i + 1) % 3])).norm();
-      if (len > longest) {
-        longest = len;
-        best = i;
-      }
-    }
-    if (longest < min_length) continue;
-    const int u = f[best], v = f[(best + 1) % 3];
-    const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
-    const int c = e.is_line_edge(u, v) ? shared_contact(e, u, v) : -1;
-    if (c >= 0) {
-      if (try_split(e, u, v, projector.on_contact(c, middle), {VertexFeature::Contact, c})) ++splits;
-      continue;
-    }
-    std::vector<int> tris;
-    e.edge_triangles(u, v, tris);
-    if (tris.size() != 2 || e.s_.triangle_part[tris[0]] != e.s_.triangle_part[tris[1]]) continue;
-    const int part = e.s_.triangle_part[t];
-    if (try_split(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part})) ++splits;
-  }
-  return splits;
-}
-
 // Repairs what the mesh building left invalid (paper §3.3: intersections "resolved by vertex
 // displacements or edge flipping"): around every triangle involved in a violation, edits that
 // make the validity strictly better are kept: moving a vertex to its smoothed position, flipping
@@ -1853,18 +1815,6 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     const int moved = optimize_angles(e, projector, 30.0);
     if (moved == 0) break;
     report.flips += flip_edges(e, options.flip_flatness_deg);
-  }
-  if (options.quality_refinement_rounds > 0) {
-    for (int round = 0; round < options.quality_refinement_rounds; ++round) {
-      const int splits = refine_bad_triangles(e, projector, 30.0, 0.5 * e.mean_edge_);
-      report.quality_splits += splits;
-      if (splits == 0) break;
-      report.flips += flip_edges(e, options.flip_flatness_deg);
-      smooth(e, projector);
-      report.flips += flip_edges(e, options.flip_flatness_deg);
-      smooth(e, projector);
-      report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
-    }
   }
   if (options.resolve_intersections) repair(e, projector, options, report);
   e.finish();

@@ -1,7 +1,10 @@
 // Clean-up of the remeshed surfaces (paper §3.3): remove valence-3 interior vertices and needle
 // triangles without unsealing contacts, merge features closer than d_min, improve the
 // triangles with edge flips and tangential smoothing, keep every vertex on the input feature it
-// samples, and resolve the remaining intersections.
+// samples, and resolve the remaining intersections. Every edit is a transaction checked against
+// what makes a structural model invalid (holes, leaks between regions, crossings, degenerate
+// triangles, pinches, folds at contacts) and undone when it makes that worse; a last repair pass
+// makes it better where it can and counts what is left.
 #pragma once
 
 #include "framework/model/structural_model.h"
@@ -25,9 +28,6 @@ struct CleanupOptions {
   /// whose middle strays farther than this from their input part, are split (the farthest input
   /// contact vertex is kept). 0 disables it.
   double fidelity_tolerance = 0.0;
-  /// Rounds of refinement of the triangles with an angle below 30 degrees (split of their longest
-  /// edge, then flips and smoothing). 0 disables it.
-  int quality_refinement_rounds = 0;
   /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
   /// angle around them is largest (after the smoothing).
   int angle_passes = 8;
@@ -47,7 +47,6 @@ struct CleanupReport {
   int pinches_left = 0;         // vertices where a part touches itself (extra fans)
   int folds_left = 0;           // wedges of a few degrees at contact edges (a triangle on another part)
   int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
-  int quality_splits = 0;       // edges of triangles with an angle below 30 degrees split
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature
 };
 
