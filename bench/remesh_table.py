@@ -38,12 +38,18 @@ def main():
         stem = os.path.splitext(os.path.basename(model))[0]
         result = os.path.join(out, f"{stem}_{seeds}.ml")
         read = ["--feature-angle", angle] if angle else []
-        p, seconds = run([a.voroseal, "--quiet", "remesh", model, "--seeds", str(seeds), "-o", result] + read)
+        p, seconds = run([a.voroseal, "--quiet", "remesh", model, "--seeds", str(seeds), "-o", result, "--json"] + read)
         row = {"model": stem, "seeds": seeds, "remesh_s": round(seconds, 2), "remesh_exit": p.returncode}
         if p.returncode != 0:
             row["error"] = p.stderr.strip().splitlines()[-1:] if p.stderr else ""
             rows.append(row)
             continue
+        # The remesher's own verdict on the regions: same count and same adjacency, regions matched through their sides.
+        try:
+            topology = json.loads(p.stdout)["remesh"]["topology"]
+            row["region_adjacency"] = "kept" if topology["regions_preserved"] else "changed"
+        except (json.JSONDecodeError, KeyError):
+            row["region_adjacency"] = "?"
         c, _ = run([a.voroseal, "--quiet", "check", result, "--json"])
         try:
             check = json.loads(c.stdout)
@@ -79,7 +85,7 @@ def main():
                 row["not_conformal"] = tr.get("surface_triangles_not_in_tets")
         rows.append(row)
         print(json.dumps(row), file=sys.stderr)
-    cols = ["model", "seeds", "vertices", "triangles", "surfaces", "contacts", "corners", "regions", "min_angle",
+    cols = ["model", "seeds", "vertices", "triangles", "surfaces", "contacts", "corners", "regions", "region_adjacency", "min_angle",
             "pct_below_30", "avg_q", "hausdorff_pct", "border_edges", "self_intersections", "check", "remesh_s"]
     if a.tetmesh:
         cols += ["tets", "min_dihedral", "not_conformal", "tetmesh_s"]
