@@ -82,7 +82,6 @@ class MeshBuilder {
     place_points();
     merge_points();
     assign_representatives();
-    if (options_.merge_contact_slivers) remove_contact_slivers();
     emit_polygons();
     assemble();
     return std::move(result_);
@@ -489,73 +488,6 @@ class MeshBuilder {
     for (size_t k = 1; k + 1 < clean.size(); ++k) {
       out_triangles_.push_back({clean[0], clean[k], clean[k + 1]});
       out_parts_.push_back(part);
-    }
-  }
-
-  // True when point p samples contact c: on it, or at a corner ending it.
-  bool on_contact(int p, int c) const {
-    const VertexFeature& f = points_[p].feature;
-    if (f.kind == VertexFeature::Contact) return f.id == c;
-    if (f.kind == VertexFeature::Corner) {
-      const auto& ends = input_.contacts[c].corners;
-      return ends[0] == f.id || ends[1] == f.id;
-    }
-    return false;
-  }
-
-  // A restricted Voronoi vertex next to a contact, in a cell whose three components all have
-  // their point on that contact, is dual to a flat triangle lying along the contact (paper
-  // §3.3: "the dual is also a degenerated triangle"). Every part along the contact that holds
-  // the vertex would get that sliver, and a contact made of slivers from several parts is not a
-  // manifold seam. The middle point is merged into its nearer neighbour along the contact
-  // instead, in every part at once, which keeps the contact sealed.
-  void remove_contact_slivers() {
-    for (int pass = 0; pass < 4; ++pass) {
-      int merged = 0;
-      for (const RvdPolygon& poly : rvd_.polygons) {
-        const int a = poly.seed;
-        for (int k = 0; k < poly.size; ++k) {
-          const RvdEdgeTag& in = rvd_.edge_tag[poly.first + (k == 0 ? poly.size - 1 : k - 1)];
-          const RvdEdgeTag& out = rvd_.edge_tag[poly.first + k];
-          if (!in.on_bisector() || !out.on_bisector() || in.neighbour == out.neighbour) continue;
-          if (a > in.neighbour || a > out.neighbour) continue;
-          const int v = gid_[poly.first + k];
-          std::array<int, 3> r{rep_at(a, v), rep_at(in.neighbour, v), rep_at(out.neighbour, v)};
-          if (r[0] < 0 || r[1] < 0 || r[2] < 0) continue;
-          for (int& x : r) x = find(x);
-          if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) continue;
-          int contact = -1;
-          for (int x : r)
-            if (points_[x].feature.kind == VertexFeature::Contact) contact = points_[x].feature.id;
-          if (contact < 0 || !on_contact(r[0], contact) || !on_contact(r[1], contact) || !on_contact(r[2], contact))
-            continue;
-          // The middle point is the one nearest to the chord of the other two.
-          int mid = -1;
-          double best = std::numeric_limits<double>::infinity();
-          for (int i = 0; i < 3; ++i) {
-            const Vec3& p = points_[r[i]].x;
-            const Vec3& q0 = points_[r[(i + 1) % 3]].x;
-            const Vec3& q1 = points_[r[(i + 2) % 3]].x;
-            const double chord = (q1 - q0).norm();
-            const double off = chord > 0 ? (q1 - q0).cross(p - q0).norm() / chord : 0.0;
-            const double rel = chord > 0 ? off / chord : 0.0;
-            if (rel < best) {
-              best = rel;
-              mid = i;
-            }
-          }
-          // Flat enough to be a sliver along the contact, not an ear at a bend of it.
-          if (best > 0.15) continue;
-          const int m = r[mid], n0 = r[(mid + 1) % 3], n1 = r[(mid + 2) % 3];
-          const int near = (points_[n0].x - points_[m].x).squaredNorm() <= (points_[n1].x - points_[m].x).squaredNorm()
-                               ? n0
-                               : n1;
-          merge(near, m);
-          ++merged;
-          ++result_.contact_slivers_removed;
-        }
-      }
-      if (merged == 0) break;
     }
   }
 

@@ -58,11 +58,6 @@ struct MeshBuildOptions {
   /// edge length of the remesh (a negative value keeps it off).
   double sharp_scale = 0.0;
   double sharp_angle_deg = 50.0;
-  /// Merge, while building, the middle point of the flat triangles a restricted Voronoi vertex
-  /// next to a contact gives (see remove_contact_slivers). Off by default: the merge cannot
-  /// check that the surfaces stay manifold; the clean-up collapses those triangles instead,
-  /// with the link condition and the validity checks of every edit.
-  bool merge_contact_slivers = false;
 };
 
 /// Mean edge length of a remesh with `seeds` seeds over `area`: the h for which
@@ -77,7 +72,6 @@ struct MeshBuildResult {
   int junction_triangles = 0;       // from restricted Voronoi vertices
   int split_polygons = 0;           // from components with two contact vertices
   int degenerate_dropped = 0;       // polygons that lost a vertex to a merge
-  int contact_slivers_removed = 0;  // contact points merged away (slivers along contacts)
   int sharp_points = 0;             // contact points held at sharp bends
   int inconsistencies = 0;          // junctions whose neighbours could not be matched (expect 0)
   int open_boundaries = 0;          // component boundaries that did not close (expect 0)

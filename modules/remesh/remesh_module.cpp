@@ -177,7 +177,6 @@ class RemeshModule final : public Module {
                          {"pinches_left", result.cleanup.pinches_left},
                          {"folds_left", result.cleanup.folds_left}};
     report["min_feature"] = result.min_feature;
-    report["contact_slivers_removed"] = result.build.contact_slivers_removed;
     report["sharp_points"] = result.build.sharp_points;
     if (result.cleanup.intersections_left > 0)
       context.log.warning("remesh: " + std::to_string(result.cleanup.intersections_left) +
