@@ -12,6 +12,12 @@ class UnionFind {
     std::iota(parent_.begin(), parent_.end(), 0);
   }
   size_t size() const { return parent_.size(); }
+  /// Adds an element in a set of its own; returns it.
+  int add() {
+    parent_.push_back(static_cast<int>(parent_.size()));
+    size_.push_back(1);
+    return parent_.back();
+  }
   int find(int x) {
     while (parent_[x] != x) {
       parent_[x] = parent_[parent_[x]];
@@ -27,6 +33,16 @@ class UnionFind {
     if (size_[a] < size_[b]) std::swap(a, b);
     parent_[b] = a;
     size_[a] += size_[b];
+    return true;
+  }
+  /// Joins the set of `absorbed` into the set of `kept`, whose root stays the root: for callers
+  /// that choose the representative. Returns true when they were in different sets.
+  bool join_into(int kept, int absorbed) {
+    kept = find(kept);
+    absorbed = find(absorbed);
+    if (kept == absorbed) return false;
+    parent_[absorbed] = kept;
+    size_[kept] += size_[absorbed];
     return true;
   }
   /// Dense labels 0..k-1 in order of first appearance; returns k.

@@ -245,7 +245,7 @@ class MeshBuilder {
   // ---- output points (Algorithm 3, step 1 and the corner merging of step 2) ----
   int add_point(const Vec3& x, VertexFeature f, int seed) {
     points_.push_back({x, f, seed});
-    parent_.push_back(static_cast<int>(parent_.size()));
+    merged_.add();
     return static_cast<int>(points_.size()) - 1;
   }
   void place_points() {
@@ -286,13 +286,7 @@ class MeshBuilder {
     }
   }
 
-  int find(int p) {
-    while (parent_[p] != p) {
-      parent_[p] = parent_[parent_[p]];
-      p = parent_[p];
-    }
-    return p;
-  }
+  int find(int p) { return merged_.find(p); }
   // Merges b into a or a into b: the more constrained feature (corner > contact > surface) wins,
   // so a merged vertex stays on the feature that matters most.
   void merge(int a, int b) {
@@ -300,7 +294,7 @@ class MeshBuilder {
     b = find(b);
     if (a == b) return;
     if (rank(points_[b].feature) > rank(points_[a].feature)) std::swap(a, b);
-    parent_[b] = a;
+    merged_.join_into(a, b);
   }
 
   // ---- Algorithm 3, steps 3 and 4 ----
@@ -587,7 +581,7 @@ class MeshBuilder {
   std::unordered_map<std::uint64_t, int> contact_component_at_;  // (seed, vertex) -> BC
   std::unordered_map<std::uint64_t, int> junction_rep_;          // (seed, vertex) -> point
   std::vector<Point> points_;
-  std::vector<int> parent_;
+  UnionFind merged_;  // points merged together; a root is the point that stays
   std::vector<std::pair<int, std::vector<int>>> center_polygons_;  // (part, points in order)
   std::vector<Triangle> out_triangles_;
   std::vector<int> out_parts_;
