@@ -12,6 +12,7 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/geometry/triangle_indices.h"
 
 namespace voroseal {
 
@@ -90,12 +91,7 @@ class IntersectionFinder {
  public:
   IntersectionFinder(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, int max_pairs)
       : triangles_(triangles), max_pairs_(max_pairs) {
-    const int nv = static_cast<int>(vertices.size());
-    for (size_t t = 0; t < triangles.size(); ++t)
-      for (int v : triangles[t])
-        if (v < 0 || v >= nv)
-          throw ModelError("triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) + " of " +
-                           std::to_string(nv));
+    check_triangle_indices(vertices.size(), triangles);
     points_.reserve(vertices.size());
     for (const Vec3& v : vertices) points_.emplace_back(v.x(), v.y(), v.z());
     batch_.reserve(std::min(kBatch, 16 * triangles.size() + 16));

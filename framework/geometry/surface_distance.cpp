@@ -9,9 +9,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <string>
 
-#include "framework/core/error.h"
+#include "framework/geometry/triangle_indices.h"
 
 namespace voroseal {
 
@@ -26,20 +25,11 @@ using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
 Point to_point(const Vec3& v) { return Point(v.x(), v.y(), v.z()); }
 
-void check_indices(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles) {
-  const int nv = static_cast<int>(vertices.size());
-  for (size_t t = 0; t < triangles.size(); ++t)
-    for (int v : triangles[t])
-      if (v < 0 || v >= nv)
-        throw ModelError("triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) + " of " +
-                         std::to_string(nv));
-}
-
 }  // namespace
 
 std::vector<Vec3> sample_surface(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                                  size_t total, uint64_t seed) {
-  check_indices(vertices, triangles);
+  check_triangle_indices(vertices.size(), triangles);
   std::vector<Vec3> samples;
   std::vector<char> used(vertices.size(), 0);
   for (const Triangle& t : triangles)
@@ -87,7 +77,7 @@ struct TriangleSetDistance::Tree {
 
 TriangleSetDistance::TriangleSetDistance(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles)
     : tree_(std::make_unique<Tree>()) {
-  check_indices(vertices, triangles);
+  check_triangle_indices(vertices.size(), triangles);
   tree_->triangles.reserve(triangles.size());
   for (const Triangle& t : triangles)
     tree_->triangles.emplace_back(to_point(vertices[t[0]]), to_point(vertices[t[1]]), to_point(vertices[t[2]]));
