@@ -562,23 +562,25 @@ StructuralModel build_model(const SurfaceSoup& soup, const BuildOptions& options
   return ModelBuilder(soup, options).build();
 }
 
+SurfaceGroup group_of_part(const StructuralModel& model, int part) {
+  const SurfacePart& p = model.parts[static_cast<size_t>(part)];
+  SurfaceGroup g;
+  g.name = p.name;
+  if (p.interface >= 0) {
+    const Interface& itf = model.interfaces[static_cast<size_t>(p.interface)];
+    g.interface = itf.name;
+    g.kind = itf.kind;
+    g.feature = itf.feature;
+  }
+  return g;
+}
+
 SurfaceSoup to_soup(const StructuralModel& model) {
   SurfaceSoup soup;
   soup.source = model.name;
   soup.points.reserve(model.vertices.size());
   for (const Vec3& v : model.vertices) soup.points.push_back(v + model.frame.origin);
-  for (size_t p = 0; p < model.parts.size(); ++p) {
-    const SurfacePart& part = model.parts[p];
-    SurfaceGroup g;
-    g.name = part.name;
-    if (part.interface >= 0) {
-      const Interface& itf = model.interfaces[part.interface];
-      g.interface = itf.name;
-      g.kind = itf.kind;
-      g.feature = itf.feature;
-    }
-    soup.groups.push_back(g);
-  }
+  for (size_t p = 0; p < model.parts.size(); ++p) soup.groups.push_back(group_of_part(model, static_cast<int>(p)));
   const ModelTriangles t = flatten(model);
   soup.triangles = t.triangles;
   soup.triangle_group = t.part;

@@ -37,4 +37,7 @@ StructuralModel build_model(const SurfaceSoup& soup, const BuildOptions& options
 /// The inverse view: one group per surface part, file coordinates, for writers.
 SurfaceSoup to_soup(const StructuralModel& model);
 
+/// The soup group of surface part `part`: its name and its interface's name, kind and feature.
+SurfaceGroup group_of_part(const StructuralModel& model, int part);
+
 }  // namespace voroseal

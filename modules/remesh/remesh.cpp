@@ -34,25 +34,16 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
   for (const Vec3& v : surface.vertices) soup.points.push_back(v + input.frame.origin);
   soup.triangles = surface.triangles;
   // One group per input part that still has triangles.
-  std::vector<int> group_of_part(input.parts.size(), -1);
+  std::vector<int> group_index(input.parts.size(), -1);
   std::vector<int> part_of_group;
   for (int p : surface.triangle_part) {
-    if (group_of_part[p] >= 0) continue;
-    group_of_part[p] = static_cast<int>(soup.groups.size());
+    if (group_index[p] >= 0) continue;
+    group_index[p] = static_cast<int>(soup.groups.size());
     part_of_group.push_back(p);
-    const SurfacePart& part = input.parts[p];
-    SurfaceGroup g;
-    g.name = part.name;
-    if (part.interface >= 0) {
-      const Interface& itf = input.interfaces[part.interface];
-      g.interface = itf.name;
-      g.kind = itf.kind;
-      g.feature = itf.feature;
-    }
-    soup.groups.push_back(g);
+    soup.groups.push_back(group_of_part(input, p));
   }
   soup.triangle_group.reserve(surface.triangle_part.size());
-  for (int p : surface.triangle_part) soup.triangle_group.push_back(group_of_part[p]);
+  for (int p : surface.triangle_part) soup.triangle_group.push_back(group_index[p]);
   if (soup.triangles.empty()) throw MesherError("remesh: the resolution is too coarse, no triangle was built");
 
   BuildOptions options;
