@@ -143,6 +143,13 @@ class Editor {
     return min_angle_deg(p(f[0]), p(f[1]), p(f[2]));
   }
   bool alive(int t) const { return !dead_[t]; }
+  // The edges (f[i], f[i + 1]) of a triangle, i shortest first (ties keep the order of i).
+  std::array<int, 3> edges_by_length(const Triangle& f) const {
+    std::array<std::pair<double, int>, 3> edges;
+    for (int i = 0; i < 3; ++i) edges[i] = {(p(f[i]) - p(f[(i + 1) % 3])).squaredNorm(), i};
+    std::sort(edges.begin(), edges.end());
+    return {edges[0].second, edges[1].second, edges[2].second};
+  }
   static bool has(const Triangle& f, int v) { return f[0] == v || f[1] == v || f[2] == v; }
   static int opposite(const Triangle& f, int u, int v) {
     for (int w : f)
@@ -1068,10 +1075,7 @@ int collapse_needles(Editor& e, double needle_angle, bool strict = false, const 
     if (e.min_angle(t) >= needle_angle && !on_one_contact(e, e.s_.triangles[t])) continue;
     // Shortest edge first: a needle has one, a cap is handled by flips.
     const Triangle f = e.s_.triangles[t];
-    std::array<std::pair<double, int>, 3> edges;
-    for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
-    std::sort(edges.begin(), edges.end());
-    for (const auto& [len, i] : edges) {
+    for (int i : e.edges_by_length(f)) {
       const int a = f[i], b = f[(i + 1) % 3];
       if (try_collapse(e, a, b, 0.0, 12.0, strict) || try_collapse(e, b, a, 0.0, 12.0, strict)) {
         ++collapsed;
@@ -1723,13 +1727,10 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
     for (int t : involved) {
       if (!e.alive(t)) continue;
       const Triangle f = e.s_.triangles[t];
-      std::array<std::pair<double, int>, 3> edges;
-      for (int i = 0; i < 3; ++i) edges[i] = {(e.p(f[i]) - e.p(f[(i + 1) % 3])).squaredNorm(), i};
-      std::sort(edges.begin(), edges.end());
       // Features closer than the resolution may merge here, when that repairs: what is left
       // invalid is most often a feature too small for the resolution (a tiny contact loop, two
       // contacts closer than an edge).
-      for (const auto& [len, i] : edges) {
+      for (int i : e.edges_by_length(f)) {
         const int a = f[i], b = f[(i + 1) % 3];
         const VertexFeature fa = e.s_.features[a], fb = e.s_.features[b];
         const Vec3 where = e.p(b);
