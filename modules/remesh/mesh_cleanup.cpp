@@ -1182,6 +1182,20 @@ bool smoothing_target(Editor& e, int v, Vec3& target) {
   return true;
 }
 
+// Whether moving v to x leaves every triangle of its ring facing the way it did, and not flat
+// (its normal keeps at least 1e-3 of its length).
+bool ring_unfolded_at(Editor& e, int v, const Vec3& x) {
+  for (int t : e.star(v)) {
+    const Triangle& tri = e.s_.triangles[t];
+    Vec3 q[3];
+    for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? x : e.p(tri[i]);
+    const Vec3 n = normal_of(q[0], q[1], q[2]);
+    const Vec3 before = e.normal(t);
+    if (!(n.dot(before) > 0.0 && n.norm() > 1e-3 * before.norm())) return false;
+  }
+  return true;
+}
+
 // Where a move of v toward `target` (then back onto its feature) ends: the full step, else half,
 // else a quarter, the first that folds no triangle of its ring. False when none does.
 bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, double step,
@@ -1190,16 +1204,7 @@ bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Ve
   const Vec3 old = e.p(v);
   const Vec3 moved = old + step * (target - old);
   result = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
-  if (result == old) return false;
-  for (int t : e.star(v)) {
-    const Triangle& tri = e.s_.triangles[t];
-    Vec3 q[3];
-    for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? result : e.p(tri[i]);
-    const Vec3 n = normal_of(q[0], q[1], q[2]);
-    const Vec3 before = e.normal(t);
-    if (!(n.dot(before) > 0.0 && n.norm() > 1e-3 * before.norm())) return false;
-  }
-  return true;
+  return result != old && ring_unfolded_at(e, v, result);
 }
 
 // Moves v toward `target` when the validity allows it (see unfolded_move()).
@@ -1312,17 +1317,8 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
   const double now = ring_min_angle(e, v, old);
   double best_angle = now + gain;
   bool found = false;
-  std::vector<Vec3> before;
-  for (int t : ring) before.push_back(e.normal(t));
   auto consider = [&](const Vec3& x) {
-    // No triangle of the ring may turn over or flatten.
-    for (size_t k = 0; k < ring.size(); ++k) {
-      const Triangle& tri = e.s_.triangles[ring[k]];
-      Vec3 q[3];
-      for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? x : e.p(tri[i]);
-      const Vec3 n = normal_of(q[0], q[1], q[2]);
-      if (!(n.dot(before[k]) > 0.0 && n.norm() > 1e-3 * before[k].norm())) return;
-    }
+    if (!ring_unfolded_at(e, v, x)) return;
     const double a = ring_min_angle(e, v, x);
     if (a > best_angle) {
       best_angle = a;
