@@ -6,6 +6,7 @@
 #include "framework/host/context.h"
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
+#include "tests/support/module_harness.h"
 #include "tests/support/test_models.h"
 
 void voroseal_register_check(voroseal::ModuleRegistry& registry);
@@ -20,12 +21,9 @@ struct CheckRun {
 };
 
 CheckRun run_check(const SurfaceSoup& soup, const nlohmann::json& values) {
-  ModuleRegistry registry;
-  voroseal_register_check(registry);
-  const Module& check = registry.get("check");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_check, "check");
+  const Module& check = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(soup));
   const Parameters parameters(check.parameters(), values);  // may throw: before capturing stdout
   testing::internal::CaptureStdout();

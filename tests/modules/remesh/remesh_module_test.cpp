@@ -19,6 +19,7 @@
 #include "modules/remesh/seed_optimization.h"
 #include "modules/remesh/seed_sampling.h"
 #include "tests/modules/remesh/synthetic_surfaces.h"
+#include "tests/support/module_harness.h"
 #include "tests/support/test_models.h"
 
 void voroseal_register_remesh(voroseal::ModuleRegistry&);
@@ -27,12 +28,9 @@ namespace voroseal {
 namespace {
 
 TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
-  ModuleRegistry registry;
-  voroseal_register_remesh(registry);
-  const Module& module = registry.get("remesh");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
   SurfaceSoup soup = test::flat_square(10, 100.0);
   for (Vec3& p : soup.points) p += Vec3(500000.0, 4000000.0, -1000.0);  // UTM-like
   context.model = std::make_shared<StructuralModel>(build_model(soup));
@@ -66,12 +64,9 @@ TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
 }
 
 TEST(RemeshModule, RejectsBadParameters) {
-  ModuleRegistry registry;
-  voroseal_register_remesh(registry);
-  const Module& module = registry.get("remesh");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(test::flat_square(4)));
   EXPECT_THROW(Parameters(module.parameters(), {{"seeds", 0}}), ParameterError);
   EXPECT_THROW(Parameters(module.parameters(), {{"optimizer", "newton"}}), ParameterError);

@@ -14,6 +14,7 @@
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
 #include "io/model_io.h"
+#include "tests/support/module_harness.h"
 #include "tests/support/test_models.h"
 
 void voroseal_register_stats(voroseal::ModuleRegistry& registry);
@@ -83,12 +84,9 @@ TEST(ModelStatistics, JsonHasTheKeysScriptsRead) {
 }
 
 TEST(StatsModule, TableJsonAndReference) {
-  ModuleRegistry registry;
-  voroseal_register_stats(registry);
-  const Module& stats = registry.get("stats");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_stats, "stats");
+  const Module& stats = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(square(0.0)));
   // A reference file: the lifted square, written as OBJ.
   const std::string ref = testing::TempDir() + "voroseal_stats_ref.obj";
@@ -131,12 +129,9 @@ VolumeMesh kuhn_cube() {
 }
 
 TEST(StatsModule, VolumeMeshFigures) {
-  ModuleRegistry registry;
-  voroseal_register_stats(registry);
-  const Module& stats = registry.get("stats");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_stats, "stats");
+  const Module& stats = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(square(0.0)));
   context.volume = std::make_shared<VolumeMesh>(kuhn_cube());
   testing::internal::CaptureStdout();
@@ -154,7 +149,7 @@ TEST(StatsModule, VolumeMeshFigures) {
   // The same figures from a volume file given as the input.
   const std::string path = testing::TempDir() + "voroseal_stats_kuhn.mesh";
   write_volume_mesh(*context.volume, path);
-  Context from_file(log, progress);
+  Context from_file(harness.log, harness.progress);
   from_file.input_path = path;
   from_file.model = context.model;
   testing::internal::CaptureStdout();

@@ -6,6 +6,7 @@
 
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
+#include "tests/support/module_harness.h"
 #include "tests/support/test_models.h"
 
 void voroseal_register_tetmesh(voroseal::ModuleRegistry& registry);
@@ -14,12 +15,9 @@ namespace voroseal {
 namespace {
 
 TEST(TetmeshModule, SetsTheVolumeAndReport) {
-  ModuleRegistry registry;
-  voroseal_register_tetmesh(registry);
-  const Module& module = registry.get("tetmesh");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
   module.run(context, Parameters(module.parameters(), {{"quality", "1.4"}}));
   ASSERT_TRUE(context.volume);
@@ -37,12 +35,9 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
 }
 
 TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
-  ModuleRegistry registry;
-  voroseal_register_tetmesh(registry);
-  const Module& module = registry.get("tetmesh");
-  Logger log(LogLevel::Quiet);
-  Progress progress(false);
-  Context context(log, progress);
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
   context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(2, true)));
   const auto dir = std::filesystem::temp_directory_path() / ("voroseal_tetmesh_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
