@@ -162,6 +162,17 @@ class MeditParser {
 
 constexpr size_t kNameTableLimit = 1000000;
 
+// The header and the Vertices section (file coordinates: local + origin), shared by the surface
+// and the volume writers.
+void write_header_and_vertices(std::ostream& out, const std::vector<Vec3>& vertices, const Vec3& origin,
+                               int precision) {
+  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << vertices.size() << "\n";
+  for (const Vec3& v : vertices) {
+    const Vec3 x = v + origin;
+    out << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision} << " 0\n";
+  }
+}
+
 }  // namespace
 
 SurfaceSoup read_medit(const TextSource& source) {
@@ -189,12 +200,7 @@ VolumeMesh read_medit_volume(const TextSource& source) {
 }
 
 void write_medit(const StructuralModel& model, std::ostream& out, int precision) {
-  const Vec3& o = model.frame.origin;
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << model.vertices.size() << "\n";
-  for (const Vec3& v : model.vertices) {
-    const Vec3 x = v + o;
-    out << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision} << " 0\n";
-  }
+  write_header_and_vertices(out, model.vertices, model.frame.origin, precision);
   const ModelTriangles t = flatten(model);
   out << "\nTriangles\n" << t.triangles.size() << "\n";
   for (size_t f = 0; f < t.triangles.size(); ++f)
@@ -204,12 +210,7 @@ void write_medit(const StructuralModel& model, std::ostream& out, int precision)
 }
 
 void write_medit_volume(const VolumeMesh& mesh, std::ostream& out, int precision) {
-  const Vec3& o = mesh.frame.origin;
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << "\n";
-  for (const Vec3& v : mesh.vertices) {
-    const Vec3 x = v + o;
-    out << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision} << " 0\n";
-  }
+  write_header_and_vertices(out, mesh.vertices, mesh.frame.origin, precision);
   out << "\nTriangles\n" << mesh.triangles.size() << "\n";
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const int s = f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0;
