@@ -399,7 +399,10 @@ class Editor {
       index.push_back(static_cast<int>(t));
       tris.push_back(s_.triangles[t]);
     }
-    c.crossings = crossing_pairs(index);
+    // The exact search of `voroseal check`; pairs come back sorted, in `tris` order, which is
+    // increasing triangle order.
+    for (const auto& [a, b] : find_self_intersections(s_.vertices, tris))
+      c.crossings.emplace_back(index[a], index[b]);
     // Holes and leaks can only be on edges that are not two consistent triangles of one part.
     std::vector<std::pair<std::pair<int, int>, int>> edges;
     for (size_t t = 0; t < s_.triangles.size(); ++t) {
@@ -449,80 +452,6 @@ class Editor {
       if ((clo.array() > hi.array()).any() || (chi.array() < lo.array()).any()) return;
       f(c);
     });
-  }
-
-  // Pairs (a < b) of the triangles `tris` (alive, not degenerate) that intersect. Candidates come
-  // from a uniform grid of their bounding boxes: a pair is tested in the one cell that holds the
-  // low corner of the overlap of their boxes. Cells are shared out between threads.
-  std::vector<std::pair<int, int>> crossing_pairs(const std::vector<int>& tris) {
-    const double inv = 1.0 / (2.0 * mean_edge_);
-    auto index = [&](double x) { return static_cast<long>(std::floor(x * inv)); };
-    auto key = [](long x, long y, long z) {
-      return (static_cast<std::uint64_t>(x & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
-             static_cast<std::uint64_t>(z & 0x1FFFFF);
-    };
-    const size_t n = tris.size();
-    std::vector<Vec3> lo(n), hi(n);
-    std::vector<std::pair<std::uint64_t, int>> entries;
-    std::vector<int> big;  // boxes over too many cells: tested against every triangle
-    entries.reserve(4 * n);
-    for (size_t i = 0; i < n; ++i) {
-      box(tris[i], lo[i], hi[i]);
-      const long x0 = index(lo[i].x()), x1 = index(hi[i].x()), y0 = index(lo[i].y()), y1 = index(hi[i].y()),
-                 z0 = index(lo[i].z()), z1 = index(hi[i].z());
-      if ((x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1) > 64) {
-        big.push_back(static_cast<int>(i));
-        continue;
-      }
-      for (long x = x0; x <= x1; ++x)
-        for (long y = y0; y <= y1; ++y)
-          for (long z = z0; z <= z1; ++z) entries.emplace_back(key(x, y, z), static_cast<int>(i));
-    }
-    std::sort(entries.begin(), entries.end());
-    std::vector<size_t> starts;
-    for (size_t k = 0; k < entries.size(); ++k)
-      if (k == 0 || entries[k].first != entries[k - 1].first) starts.push_back(k);
-    starts.push_back(entries.size());
-    auto overlap = [&](size_t i, size_t j) {
-      return !((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any());
-    };
-    auto test = [&](size_t i, size_t j) {
-      const int a = tris[i], b = tris[j];
-      return !adjacent_apart(a, b) && triangles_intersect(s_.vertices, s_.triangles[a], s_.triangles[b]);
-    };
-    std::vector<std::pair<int, int>> found;
-    const long cells = static_cast<long>(starts.size()) - 1;
-#pragma omp parallel
-    {
-      std::vector<std::pair<int, int>> mine;
-#pragma omp for schedule(dynamic, 64) nowait
-      for (long cidx = 0; cidx < cells; ++cidx) {
-        const std::uint64_t here = entries[starts[cidx]].first;
-        for (size_t p = starts[cidx]; p < starts[cidx + 1]; ++p)
-          for (size_t q = p + 1; q < starts[cidx + 1]; ++q) {
-            const size_t i = entries[p].second, j = entries[q].second;
-            if (!overlap(i, j)) continue;
-            const Vec3 corner = lo[i].cwiseMax(lo[j]);
-            if (key(index(corner.x()), index(corner.y()), index(corner.z())) != here) continue;
-            if (test(i, j)) mine.emplace_back(std::min(tris[i], tris[j]), std::max(tris[i], tris[j]));
-          }
-      }
-#pragma omp for schedule(dynamic, 1) nowait
-      for (long bi = 0; bi < static_cast<long>(big.size()); ++bi) {
-        const size_t i = big[bi];
-        for (size_t j = 0; j < n; ++j) {
-          if (j == i || !overlap(i, j)) continue;
-          // A pair of two big boxes is tested from the lower one only.
-          if (std::binary_search(big.begin(), big.end(), static_cast<int>(j)) && j < i) continue;
-          if (test(i, j)) mine.emplace_back(std::min(tris[i], tris[j]), std::max(tris[i], tris[j]));
-        }
-      }
-#pragma omp critical
-      found.insert(found.end(), mine.begin(), mine.end());
-    }
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
-    return found;
   }
 
   // Holes and leaks on one edge.
