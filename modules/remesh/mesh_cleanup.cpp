@@ -33,8 +33,9 @@ struct Violations {
   int degenerate = 0;  // triangles with collinear vertices
   int pinches = 0;     // extra fans of a part around a vertex (the part touches itself there)
   int folds = 0;       // wedges thinner than kFoldDeg between consecutive triangles around a
-                       // contact edge: a triangle lying on another part, which leaves a volume of
-                       // no thickness there (and flat tetrahedra in any volume mesh)
+                       // contact edge (a triangle lying on another part), or between the two
+                       // triangles of a part's edge (a pleat): a volume of no thickness there
+                       // (and flat tetrahedra in any volume mesh)
   int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
 };
 
@@ -170,6 +171,22 @@ class Editor {
     list.erase(std::unique(list.begin(), list.end()), list.end());
     return list;
   }
+  // The triangles of `part` around v when they close a fan around it (every neighbour in two of
+  // them), else 0.
+  int closed_fan_size(int v, int part) {
+    fan_count_.clear();
+    int n = 0;
+    for (int t : star(v)) {
+      if (s_.triangle_part[t] != part) continue;
+      ++n;
+      for (int w : s_.triangles[t])
+        if (w != v) ++fan_count_[w];
+    }
+    for (const auto& [w, k] : fan_count_)
+      if (k != 2) return 0;
+    return n;
+  }
+
   // Alive triangles containing edge (u, v).
   void edge_triangles(int u, int v, std::vector<int>& out) {
     out.clear();
@@ -565,7 +582,13 @@ class Editor {
     }
     const int t0 = fan_tris_[0], t1 = fan_tris_[1];
     if (k == 2 && s_.triangle_part[t0] == s_.triangle_part[t1]) {
-      if (has_directed_edge(s_.triangles[t0], a, b) == has_directed_edge(s_.triangles[t1], a, b)) ++out.leaks;
+      if (has_directed_edge(s_.triangles[t0], a, b) == has_directed_edge(s_.triangles[t1], a, b)) {
+        ++out.leaks;
+        return;
+      }
+      // A pleat: the part turns back onto itself across the edge (normals nearly opposite).
+      const Vec3 n0 = normal(t0), n1 = normal(t1);
+      if (n0.dot(n1) < -std::cos(kFoldDeg * M_PI / 180.0) * n0.norm() * n1.norm()) ++out.folds;
       return;
     }
     // Radial order of the triangles around the edge.
@@ -614,6 +637,7 @@ class Editor {
   std::vector<std::pair<int, int>> edges_;
   std::vector<int> fan_tris_, verts_, ring_;
   std::vector<Blade> fan_;
+  std::map<int, int> fan_count_;
 };
 
 // Applies an edit as a transaction: `affected_before` gives the triangles whose violations the
@@ -690,6 +714,67 @@ int remove_valence3(Editor& e) {
     removed += done ? 1 : 0;
   }
   return removed;
+}
+
+// Vertices on contacts cannot go, but a part that runs on across the contact (a horizon ending
+// on a fault: the fault part holds the contact) may close a fan of three triangles around one. On a flat part that fan is a dent or a bump no tet mesh keeping the surface can fill
+// without a flat tetrahedron (remeshed CloudSpin_fixed: 0.03°). Flipping a side of the fan,
+// toward the best-shaped pair, gives the vertex four triangles there.
+int raise_valence3_on_contacts(Editor& e) {
+  int raised = 0;
+  std::vector<int> edge;
+  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+    const int v = static_cast<int>(vi);
+    const std::vector<int> star = e.star(v);
+    std::map<int, std::vector<int>> by_part;
+    for (int t : star) by_part[e.s_.triangle_part[t]].push_back(t);
+    // Inside one part the fan goes (remove_valence3); a surface vertex may also sit where
+    // another part ends (its free border), which the fan must keep.
+    if (by_part.size() < 2) continue;
+    for (const auto& [part, fan] : by_part) {
+      if (fan.size() != 3 || e.closed_fan_size(v, part) != 3) continue;
+      // Best flip of a side (x, y) of the fan that is not on a contact: triangle (v, x, y) and the
+      // triangle (y, x, o) of the part beyond it become (v, x, o) and (v, o, y).
+      double best_angle = 0.0;
+      int best_in = -1, best_out = -1;
+      Triangle g1{}, g2{};
+      for (int t : fan) {
+        const Triangle& f = e.s_.triangles[t];
+        const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
+        const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
+        if (e.is_line_edge(x, y)) continue;
+        e.edge_triangles(x, y, edge);
+        if (edge.size() != 2) continue;
+        const int out = edge[0] == t ? edge[1] : edge[0];
+        if (e.s_.triangle_part[out] != part) continue;
+        const int o = Editor::opposite(e.s_.triangles[out], x, y);
+        if (o == v || e.edge_exists(v, o)) continue;
+        const Triangle a{v, x, o}, b{v, o, y};
+        const Vec3 ref = e.normal(t) + e.normal(out);
+        if (normal_of(e.p(v), e.p(x), e.p(o)).dot(ref) <= 0 || normal_of(e.p(v), e.p(o), e.p(y)).dot(ref) <= 0)
+          continue;
+        const double angle =
+            std::min(min_angle_deg(e.p(v), e.p(x), e.p(o)), min_angle_deg(e.p(v), e.p(o), e.p(y)));
+        if (angle > best_angle) {
+          best_angle = angle;
+          best_in = t;
+          best_out = out;
+          g1 = a;
+          g2 = b;
+        }
+      }
+      if (best_in < 0) continue;
+      if (transact(e, {best_in, best_out}, false, [&](std::vector<int>& after) {
+            e.kill(best_in);
+            e.kill(best_out);
+            after = {e.add_triangle(g1, part), e.add_triangle(g2, part)};
+            return true;
+          }))
+        ++raised;
+      break;  // the star changed
+    }
+  }
+  return raised;
 }
 
 // Collapse of u into v allowed by the features: a vertex only slides onto something at least as
@@ -1038,6 +1123,11 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
     if (e.projector_->distance_to_part(e.s_.triangle_part[t1], middle) > e.tolerance_) return false;
   }
+  // Nor does it leave a contact vertex three triangles of the part (see raise_valence3_on_contacts).
+  if (!strict)
+    for (int w : {u, v})
+      if (e.s_.features[w].kind != VertexFeature::Surface && e.closed_fan_size(w, e.s_.triangle_part[t1]) == 4)
+        return false;
   const Triangle g1{c, u, d}, g2{d, v, c};
   const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
   if (!strict && after <= before + 1e-3) return false;
@@ -1708,6 +1798,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   // invalid, and d_min merges need valid surroundings to be accepted.
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
   report.valence3_removed += remove_valence3(e);
+  report.valence3_raised += raise_valence3_on_contacts(e);
   merge_close_features(e, projector, options.min_feature, report);
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
   report.flips += flip_edges(e, options.flip_flatness_deg);
@@ -1717,6 +1808,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     ++report.smoothing_passes;
   }
   report.valence3_removed += remove_valence3(e);
+  report.valence3_raised += raise_valence3_on_contacts(e);
   // Smoothing brings some features closer than d_min, and the first merges open the way to others.
   merge_close_features(e, projector, options.min_feature, report);
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
@@ -1743,6 +1835,9 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     report.flips += flip_edges(e, options.flip_flatness_deg);
   }
   if (options.resolve_intersections) repair(e, projector, options, report);
+  // The edits since (the repairs included) may have closed new fans of three; flips that make
+  // nothing worse.
+  report.valence3_raised += raise_valence3_on_contacts(e);
   e.finish();
   return report;
 }

@@ -35,6 +35,7 @@ struct CleanupOptions {
 
 struct CleanupReport {
   int valence3_removed = 0;
+  int valence3_raised = 0;    // contact vertices given a fourth triangle in a part (a flip)
   int needles_collapsed = 0;
   int flips = 0;
   int smoothing_passes = 0;

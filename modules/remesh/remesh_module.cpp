@@ -165,6 +165,7 @@ class RemeshModule final : public Module {
                                {"degenerate_dropped", result.build.degenerate_dropped},
                                {"inconsistencies", result.build.inconsistencies}};
     report["cleanup"] = {{"valence3_removed", result.cleanup.valence3_removed},
+                         {"valence3_raised", result.cleanup.valence3_raised},
                          {"needles_collapsed", result.cleanup.needles_collapsed},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},

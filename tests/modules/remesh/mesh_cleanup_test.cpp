@@ -105,5 +105,55 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
 
+// Triangles of `part` around vertex v.
+int part_valence(const RemeshedSurface& s, int v, int part) {
+  int n = 0;
+  for (size_t t = 0; t < s.triangles.size(); ++t)
+    if (s.triangle_part[t] == part && (s.triangles[t][0] == v || s.triangles[t][1] == v || s.triangles[t][2] == v)) ++n;
+  return n;
+}
+
+TEST(MeshCleanup, GivesAContactVertexAFourthTriangleInAPartThatRunsOn) {
+  // A flat part (z = 0) holding a contact a-v where a wall ends on it (a T-junction): v has a
+  // closed fan of three triangles in the flat part, a flat tet in any tet mesh.
+  SurfaceSoup soup;
+  const double r = std::sqrt(3.0) / 2.0;
+  soup.points = {{0, 0, 0},  {-r, -0.5, 0},    {r, -0.5, 0},      {0, 1, 0},          // v a b c
+                 {r, 0.5, 0}, {-r, 0.5, 0},     {0, -1, 0},                             // beyond the fan
+                 {-2 * r, -1, 0}, {2 * r, -1, 0}, {0, 2, 0},                            // beyond a, b, c
+                 {-r, -0.5, 1}, {0, 0, 1},     {-r / 2, -0.25, 0.5}};                  // the wall
+  soup.triangles = {{0, 2, 3}, {0, 3, 1}, {0, 1, 2}, {3, 2, 4}, {1, 3, 5}, {2, 1, 6}, {1, 5, 7},
+                    {1, 7, 6}, {2, 6, 8}, {2, 8, 4}, {3, 4, 9}, {3, 9, 5},
+                    {1, 0, 12}, {0, 11, 12}, {11, 10, 12}, {10, 1, 12}};
+  soup.triangle_group = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1};
+  soup.groups = {{"flat", "flat", SurfaceKind::Horizon, ""}, {"wall", "wall", SurfaceKind::Fault, ""}};
+  const StructuralModel input = build_model(soup);
+  ASSERT_EQ(input.parts.size(), 2u);
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  int v = -1;
+  for (size_t i = 0; i < s.vertices.size(); ++i)
+    if (s.vertices[i] + input.frame.origin == Vec3(0, 0, 0)) v = static_cast<int>(i);
+  ASSERT_GE(v, 0);
+  ASSERT_NE(s.features[v].kind, VertexFeature::Surface);
+  int flat = -1;  // the part of the triangles at z = 0
+  for (size_t t = 0; t < s.triangles.size(); ++t) {
+    double z = 0;
+    for (int w : s.triangles[t]) z = std::max(z, std::abs(s.vertices[w].z() + input.frame.origin.z()));
+    if (z == 0) flat = s.triangle_part[t];
+  }
+  ASSERT_EQ(part_valence(s, v, flat), 3);
+  CleanupOptions options;
+  options.smoothing_iterations = 0;
+  options.angle_passes = 0;
+  options.min_feature = 0.0;
+  options.fidelity_tolerance = 0.0;
+  const CleanupReport report = clean_up(s, input, projector, options);
+  EXPECT_EQ(report.valence3_raised, 1);
+  EXPECT_EQ(part_valence(s, v, flat), 4);
+  EXPECT_EQ(s.triangles.size(), 16u);
+  EXPECT_EQ(report.holes_left + report.leaks_left + report.folds_left + report.intersections_left, 0);
+}
+
 }  // namespace
 }  // namespace voroseal
