@@ -48,6 +48,8 @@ def main():
         try:
             topology = json.loads(p.stdout)["remesh"]["topology"]
             row["region_adjacency"] = "kept" if topology["regions_preserved"] else "changed"
+            # Input features without a counterpart: all of them / those larger than the edge length.
+            row["features_lost"] = f'{len(topology["features_lost"])}/{topology["features_lost_larger_than_resolution"]}'
         except (json.JSONDecodeError, KeyError):
             row["region_adjacency"] = "?"
         c, _ = run([a.voroseal, "--quiet", "check", result, "--json"])
@@ -85,7 +87,8 @@ def main():
                 row["not_conformal"] = tr.get("surface_triangles_not_in_tets")
         rows.append(row)
         print(json.dumps(row), file=sys.stderr)
-    cols = ["model", "seeds", "vertices", "triangles", "surfaces", "contacts", "corners", "regions", "region_adjacency", "min_angle",
+    cols = ["model", "seeds", "vertices", "triangles", "surfaces", "contacts", "corners", "regions", "region_adjacency",
+            "features_lost", "min_angle",
             "pct_below_30", "avg_q", "hausdorff_pct", "border_edges", "self_intersections", "check", "remesh_s"]
     if a.tetmesh:
         cols += ["tets", "min_dihedral", "not_conformal", "tetmesh_s"]

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <iterator>
 #include <set>
@@ -27,7 +28,7 @@ FeatureCounts counts_of(const StructuralModel& m) {
 }  // namespace
 
 StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
-                                    TopologyReport* report) {
+                                    TopologyReport* report, double resolution) {
   SurfaceSoup soup;
   soup.source = input.name;
   soup.points.reserve(surface.vertices.size());
@@ -125,6 +126,9 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
     std::set_difference(touch_out.begin(), touch_out.end(), touch_in.begin(), touch_in.end(),
                         std::back_inserter(report->contacts_gained));
     report->regions_preserved = preserved && report->contacts_lost.empty() && report->contacts_gained.empty();
+    std::vector<int> input_part(out.parts.size());
+    for (size_t p = 0; p < out.parts.size(); ++p) input_part[p] = part_of_group[out.parts[p].source_group];
+    report->features = audit_features(input, out, input_part, resolution);
   }
   return out;
 }
@@ -167,7 +171,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   if (options.clean_up) result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
   result.cleanup_seconds = seconds_since(t0);
 
-  result.model = model_from_remeshed(result.build.surface, input, &result.topology);
+  result.model = model_from_remeshed(result.build.surface, input, &result.topology, 2.0 * h / std::sqrt(3.0));
   result.topology.merges = result.build.merges;
   result.topology.merges.insert(result.topology.merges.end(), result.cleanup.merges.begin(), result.cleanup.merges.end());
   result.build.surface = RemeshedSurface{};

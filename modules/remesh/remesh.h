@@ -13,6 +13,7 @@
 
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
+#include "modules/remesh/feature_audit.h"
 #include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
 #include "modules/remesh/seed_optimization.h"
@@ -47,6 +48,8 @@ struct TopologyReport {
   /// and the other way round.
   std::vector<std::pair<int, int>> contacts_lost, contacts_gained;
   std::vector<FeatureMerge> merges;
+  /// Input parts, contacts and corners without a counterpart, against the cell size.
+  FeatureAudit features;
 };
 
 struct RemeshResult {
@@ -69,8 +72,9 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
                                const RemeshOptions& options, Logger& log);
 
 /// The output model from remeshed surfaces: parts, contacts, corners and regions inferred from
-/// the triangles; part, interface and region names taken from the input.
+/// the triangles; part, interface and region names taken from the input. `resolution` is what
+/// the report's feature audit compares lost features with (FeatureAudit::resolution).
 StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
-                                    TopologyReport* report = nullptr);
+                                    TopologyReport* report = nullptr, double resolution = 0.0);
 
 }  // namespace voroseal

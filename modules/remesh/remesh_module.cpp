@@ -234,13 +234,40 @@ class RemeshModule final : public Module {
     nlohmann::json lost = nlohmann::json::array();
     for (int r : lost_regions(t))
       lost.push_back({{"index", r}, {"name", input.regions[static_cast<size_t>(r)].name}});
+    nlohmann::json features = nlohmann::json::array();
+    for (const LostFeature& f : t.features.lost) {
+      const Vec3 x = f.location + input.frame.origin;
+      features.push_back({{"kind", feature_kind(f.kind)},
+                          {"id", f.id},
+                          {"name", feature_name(f, input)},
+                          {"size", f.size},
+                          {"larger_than_resolution", f.size >= t.features.resolution},
+                          {"location", {x.x(), x.y(), x.z()}}});
+    }
     return {{"before", counts(t.input)},
             {"after", counts(t.output)},
             {"regions_preserved", t.regions_preserved},
             {"regions_lost", lost},
             {"region_contacts_lost", t.contacts_lost},
             {"region_contacts_gained", t.contacts_gained},
-            {"merges", merges}};
+            {"merges", merges},
+            {"resolution", t.features.resolution},
+            {"features_lost", features},
+            {"features_lost_larger_than_resolution", t.features.larger_than_resolution()}};
+  }
+  static const char* feature_kind(VertexFeature::Kind kind) {
+    return kind == VertexFeature::Surface ? "surface" : kind == VertexFeature::Contact ? "contact" : "corner";
+  }
+  // A part's name; a contact's parts; a corner's contacts.
+  static std::string feature_name(const LostFeature& f, const StructuralModel& input) {
+    if (f.kind == VertexFeature::Surface) return input.parts[static_cast<size_t>(f.id)].name;
+    std::string name;
+    auto add = [&](const std::string& s) { name += (name.empty() ? "" : " / ") + s; };
+    if (f.kind == VertexFeature::Contact)
+      for (int part : input.contacts[static_cast<size_t>(f.id)].parts) add(input.parts[static_cast<size_t>(part)].name);
+    else
+      for (int c : input.corners[static_cast<size_t>(f.id)].contacts) add("contact " + std::to_string(c));
+    return name;
   }
   // Input regions with no output region: thinner than the resolution, or merged with a neighbour.
   static std::vector<int> lost_regions(const TopologyReport& t) {
@@ -268,6 +295,22 @@ class RemeshModule final : public Module {
     if (!t.merges.empty())
       log.info("remesh: " + std::to_string(t.merges.size()) +
                " features merged where the resolution is coarser than them (see the JSON report)");
+    const int large = t.features.larger_than_resolution();
+    const int small = static_cast<int>(t.features.lost.size()) - large;
+    if (small > 0) {
+      std::snprintf(line, sizeof line,
+                    "remesh: %d input surfaces, contacts or corners smaller than a cell (%.4g) have no "
+                    "counterpart in the output (JSON: topology.features_lost)",
+                    small, t.features.resolution);
+      log.info(line);
+    }
+    for (const LostFeature& f : t.features.lost) {
+      if (f.size < t.features.resolution) continue;
+      const Vec3 x = f.location + input.frame.origin;
+      std::snprintf(line, sizeof line, "remesh: input %s %d (%s, size %.4g, at %.10g %.10g %.10g)", feature_kind(f.kind),
+                    f.id, feature_name(f, input).c_str(), f.size, x.x(), x.y(), x.z());
+      log.warning(std::string(line) + " is larger than a cell and has no counterpart in the output: try a finer --edge-length or a smaller --min-feature");
+    }
   }
 };
 

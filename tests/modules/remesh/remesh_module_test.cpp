@@ -61,6 +61,11 @@ TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
   ASSERT_GE(r.at("history").size(), 2u);
   EXPECT_LT(r.at("history").back().at("energy").get<double>(), r.at("history").front().at("energy").get<double>());
   EXPECT_TRUE(r.at("timings").contains("optimization_s"));
+  // A flat square keeps its one part, four border contacts and corners.
+  const nlohmann::json& topology = r.at("topology");
+  EXPECT_GT(topology.at("resolution").get<double>(), 0.0);
+  EXPECT_TRUE(topology.at("features_lost").empty()) << topology.at("features_lost").dump();
+  EXPECT_EQ(topology.at("features_lost_larger_than_resolution").get<int>(), 0);
 }
 
 TEST(RemeshModule, RejectsBadParameters) {

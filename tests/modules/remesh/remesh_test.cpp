@@ -57,6 +57,8 @@ TEST(Remesh, BoxWithHorizonKeepsEverything) {
   EXPECT_TRUE(r.topology.contacts_lost.empty());
   EXPECT_TRUE(r.topology.contacts_gained.empty());
   for (const Region& reg : out.regions) EXPECT_NEAR(-out.signed_volume(reg.sides), 0.5, 1e-6);
+  EXPECT_TRUE(r.topology.features.lost.empty());
+  EXPECT_GT(r.topology.features.resolution, 0.0);
   const EdgeCounts e = count_edges(out);
   EXPECT_EQ(e.border, 0);
   EXPECT_GT(mean_quality(out), 0.85);
@@ -88,6 +90,15 @@ TEST(Remesh, KeepsAFlatLayerThinnerThanTheResolution) {
   EXPECT_LT(volumes[0], 0.001 + 1e-9);
   EXPECT_EQ(count_edges(r.model).border, 0);
   EXPECT_EQ(r.cleanup.intersections_left, 0);
+  // What the pinches took (the layer's vertical box edges and corners) is listed, each as large
+  // as the layer is thick (0.001), far below the edge length.
+  const FeatureAudit& audit = r.topology.features;
+  EXPECT_FALSE(audit.lost.empty());
+  for (const LostFeature& f : audit.lost) {
+    EXPECT_NE(f.kind, VertexFeature::Surface);
+    EXPECT_NEAR(f.size, 0.001, 1e-5);
+  }
+  EXPECT_EQ(audit.larger_than_resolution(), 0);
 }
 
 }  // namespace

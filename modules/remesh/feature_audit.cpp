@@ -1,0 +1,183 @@
+#include "modules/remesh/feature_audit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace voroseal {
+
+int FeatureAudit::larger_than_resolution() const {
+  return static_cast<int>(std::count_if(lost.begin(), lost.end(),
+                                        [&](const LostFeature& f) { return f.size >= resolution; }));
+}
+
+namespace {
+
+/// 2 × area / perimeter of every part (perimeter: edges with one triangle of the part).
+std::vector<std::pair<double, Vec3>> part_widths(const StructuralModel& model) {
+  const ModelTriangles mt = flatten(model);
+  const std::vector<Vec3>& p = model.vertices;
+  std::vector<double> area(model.parts.size(), 0.0), perimeter(model.parts.size(), 0.0);
+  std::vector<Vec3> somewhere(model.parts.size(), Vec3::Zero());
+  std::vector<std::map<std::pair<int, int>, int>> edges(model.parts.size());
+  for (size_t t = 0; t < mt.triangles.size(); ++t) {
+    const Triangle& f = mt.triangles[t];
+    const int part = mt.part[t];
+    const double a = 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
+    if (a > area[part]) somewhere[part] = (p[f[0]] + p[f[1]] + p[f[2]]) / 3.0;  // its largest triangle
+    area[part] += a;
+    for (int i = 0; i < 3; ++i) ++edges[part][std::minmax(f[i], f[(i + 1) % 3])];
+  }
+  std::vector<std::pair<double, Vec3>> out(model.parts.size());
+  for (size_t part = 0; part < model.parts.size(); ++part) {
+    for (const auto& [e, n] : edges[part])
+      if (n == 1) perimeter[part] += (p[e.first] - p[e.second]).norm();
+    // A closed part (no border) is as wide as its area allows.
+    out[part] = {perimeter[part] > 0.0 ? 2.0 * area[part] / perimeter[part] : std::sqrt(area[part]),
+                 somewhere[part]};
+  }
+  return out;
+}
+
+
+// The input parts meeting at every contact and at every corner of `m` (parts mapped by `to_input`).
+using PartSet = std::vector<int>;
+std::pair<std::vector<PartSet>, std::vector<PartSet>> contact_and_corner_parts(const StructuralModel& m,
+                                                                              const std::vector<int>& to_input) {
+  std::vector<PartSet> contacts(m.contacts.size()), corners(m.corners.size());
+  auto tidy = [](PartSet& s) {
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+  };
+  for (size_t c = 0; c < m.contacts.size(); ++c) {
+    for (int part : m.contacts[c].parts) contacts[c].push_back(to_input[part]);
+    tidy(contacts[c]);
+  }
+  for (size_t k = 0; k < m.corners.size(); ++k) {
+    for (int c : m.corners[k].contacts) corners[k].insert(corners[k].end(), contacts[c].begin(), contacts[c].end());
+    tidy(corners[k]);
+  }
+  return {contacts, corners};
+}
+
+// Marks lost the input features the output has no counterpart for, largest first: an output
+// feature where the same parts meet, else one where they meet with others (a part merged away
+// nearby now touches it too), each output feature used once.
+void match(const std::vector<PartSet>& in, const std::vector<PartSet>& out, const std::vector<double>& size,
+           std::vector<char>& lost) {
+  std::vector<int> order(in.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
+  std::vector<char> used(out.size(), 0);
+  lost.assign(in.size(), 1);
+  for (bool exact : {true, false})
+    for (int i : order) {
+      if (!lost[i]) continue;
+      for (size_t j = 0; j < out.size(); ++j) {
+        if (used[j]) continue;
+        const bool same = out[j] == in[i];
+        if (same || (!exact && std::includes(out[j].begin(), out[j].end(), in[i].begin(), in[i].end()))) {
+          used[j] = 1;
+          lost[i] = 0;
+          break;
+        }
+      }
+    }
+}
+
+// Distance from x to the polyline through `line`'s vertices.
+double distance_to_line(const Vec3& x, const std::vector<int>& line, const std::vector<Vec3>& p) {
+  double best = line.empty() ? std::numeric_limits<double>::infinity() : (x - p[line[0]]).norm();
+  for (size_t i = 1; i < line.size(); ++i) {
+    const Vec3 &a = p[line[i - 1]], &b = p[line[i]];
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (x - (a + t * ab)).norm());
+  }
+  return best;
+}
+
+// How close contact c runs along another contact: the smallest, over the other contacts, of the
+// largest distance from c's vertices to it (a contact 70 m from a box edge all along: 70 m; two
+// contacts meeting at a wide angle: the length of the shorter).
+double proximity(const StructuralModel& m, int c) {
+  const std::vector<int>& line = m.contacts[c].vertices;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t d = 0; d < m.contacts.size(); ++d) {
+    if (static_cast<int>(d) == c) continue;
+    double farthest = 0.0;
+    for (int v : line) {
+      farthest = std::max(farthest, distance_to_line(m.vertices[v], m.contacts[d].vertices, m.vertices));
+      if (farthest >= best) break;
+    }
+    best = std::min(best, farthest);
+  }
+  return best;
+}
+
+}  // namespace
+
+FeatureAudit audit_features(const StructuralModel& input, const StructuralModel& output,
+                            const std::vector<int>& input_part, double resolution) {
+  FeatureAudit audit;
+  audit.resolution = resolution;
+  const std::vector<Vec3>& p = input.vertices;
+
+  std::vector<char> part_kept(input.parts.size(), 0);
+  for (int part : input_part) part_kept[part] = 1;
+  std::vector<int> identity(input.parts.size());
+  for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
+  const auto [in_contacts, in_corners] = contact_and_corner_parts(input, identity);
+  const auto [out_contacts, out_corners] = contact_and_corner_parts(output, input_part);
+
+  // A contact is no larger than the narrowest part it bounds (two contacts along a thin strip
+  // become one when the strip goes), a corner no larger than its contacts or the distance to
+  // the nearest other corner.
+  const auto widths = part_widths(input);
+  std::vector<double> length(input.contacts.size(), 0.0), spacing(input.corners.size());
+  for (size_t c = 0; c < input.contacts.size(); ++c) {
+    const std::vector<int>& line = input.contacts[c].vertices;
+    for (size_t i = 1; i < line.size(); ++i) length[c] += (p[line[i]] - p[line[i - 1]]).norm();
+    for (int part : input.contacts[c].parts) length[c] = std::min(length[c], widths[part].first);
+  }
+  for (size_t k = 0; k < input.corners.size(); ++k) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < input.corners.size(); ++j)
+      if (j != k) nearest = std::min(nearest, (p[input.corners[j].vertex] - p[input.corners[k].vertex]).norm());
+    for (int c : input.corners[k].contacts) nearest = std::min(nearest, length[c]);
+    spacing[k] = nearest;
+  }
+  std::vector<char> contact_lost, corner_lost;
+  match(in_contacts, out_contacts, length, contact_lost);
+  match(in_corners, out_corners, spacing, corner_lost);
+  // A contact is also no larger than its distance to a contact it runs along (a thin wedge of a
+  // wide part between them); only worked out for what is lost.
+  std::vector<char> refine(input.contacts.size(), 0);
+  for (size_t c = 0; c < input.contacts.size(); ++c) refine[c] = contact_lost[c];
+  for (size_t k = 0; k < input.corners.size(); ++k)
+    if (corner_lost[k])
+      for (int c : input.corners[k].contacts) refine[c] = 1;
+  for (size_t c = 0; c < input.contacts.size(); ++c)
+    if (refine[c]) length[c] = std::min(length[c], proximity(input, static_cast<int>(c)));
+  for (size_t k = 0; k < input.corners.size(); ++k)
+    if (corner_lost[k])
+      for (int c : input.corners[k].contacts) spacing[k] = std::min(spacing[k], length[c]);
+
+  for (size_t part = 0; part < input.parts.size(); ++part)
+    if (!part_kept[part])
+      audit.lost.push_back({VertexFeature::Surface, static_cast<int>(part), widths[part].first, widths[part].second});
+  for (size_t c = 0; c < input.contacts.size(); ++c)
+    if (contact_lost[c]) {
+      const std::vector<int>& line = input.contacts[c].vertices;
+      audit.lost.push_back({VertexFeature::Contact, static_cast<int>(c), length[c], p[line[line.size() / 2]]});
+    }
+  for (size_t k = 0; k < input.corners.size(); ++k)
+    if (corner_lost[k])
+      audit.lost.push_back({VertexFeature::Corner, static_cast<int>(k), spacing[k], p[input.corners[k].vertex]});
+  return audit;
+}
+
+}  // namespace voroseal
