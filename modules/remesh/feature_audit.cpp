@@ -9,8 +9,12 @@
 namespace voroseal {
 
 int FeatureAudit::larger_than_resolution() const {
-  return static_cast<int>(std::count_if(lost.begin(), lost.end(),
-                                        [&](const LostFeature& f) { return f.size >= resolution; }));
+  auto large = [&](double size) { return size >= resolution ? 1 : 0; };
+  int n = 0;
+  for (const LostFeature& f : lost) n += large(f.size);
+  for (const LostRegion& r : regions_lost) n += large(r.thickness);
+  for (const LostRegionContact& c : region_contacts_lost) n += large(c.width);
+  return n;
 }
 
 namespace {
@@ -178,6 +182,33 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
     if (corner_lost[k])
       audit.lost.push_back({VertexFeature::Corner, static_cast<int>(k), spacing[k], p[input.corners[k].vertex]});
   return audit;
+}
+
+void audit_regions(const StructuralModel& input, const std::vector<int>& lost,
+                   const std::vector<std::pair<int, int>>& contacts_lost, FeatureAudit& audit) {
+  const ModelTriangles mt = flatten(input);
+  const std::vector<Vec3>& p = input.vertices;
+  std::vector<double> part_area(input.parts.size(), 0.0);
+  for (size_t t = 0; t < mt.triangles.size(); ++t) {
+    const Triangle& f = mt.triangles[t];
+    part_area[mt.part[t]] += 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
+  }
+  for (int r : lost) {
+    const Region& region = input.regions[static_cast<size_t>(r)];
+    double area = 0.0;
+    for (const Side& s : region.sides) area += part_area[s.part];
+    const double volume = std::abs(input.signed_volume(region.sides));
+    audit.regions_lost.push_back({r, area > 0.0 ? 2.0 * volume / area : 0.0});
+  }
+  const auto widths = part_widths(input);
+  const auto sides = input.part_regions();
+  for (const auto& [a, b] : contacts_lost) {
+    double width = 0.0;
+    for (size_t part = 0; part < sides.size(); ++part)
+      if ((sides[part].first == a && sides[part].second == b) || (sides[part].first == b && sides[part].second == a))
+        width = std::max(width, widths[part].first);
+    audit.region_contacts_lost.push_back({a, b, width});
+  }
 }
 
 }  // namespace voroseal

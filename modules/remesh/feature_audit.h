@@ -24,12 +24,26 @@ struct LostFeature {
   Vec3 location = Vec3::Zero();                       // a point of the feature, local frame
 };
 
+/// An input region without its own output region: thinner than a cell, or merged.
+struct LostRegion {
+  int region = -1;
+  double thickness = 0.0;  // 2 × volume / area of its sides: a layer's thickness (a third of a cube's side)
+};
+
+/// Two input regions that no longer touch.
+struct LostRegionContact {
+  int a = -1, b = -1;
+  double width = 0.0;  // of the widest input part between them
+};
+
 struct FeatureAudit {
   /// What features are compared with: the diameter of a restricted Voronoi cell, 2h/√3 for a
   /// mean edge length h (a regular hexagon's); the paper's merges act within one cell.
   double resolution = 0.0;
   std::vector<LostFeature> lost;  // surface parts, then contacts, then corners
-  /// Lost features at least as large as the resolution.
+  std::vector<LostRegion> regions_lost;
+  std::vector<LostRegionContact> region_contacts_lost;
+  /// Lost features, regions and region contacts at least as large as the resolution.
   int larger_than_resolution() const;
 };
 
@@ -39,5 +53,10 @@ struct FeatureAudit {
 /// parts meet (as many as the input has: the largest are counted kept).
 FeatureAudit audit_features(const StructuralModel& input, const StructuralModel& output,
                             const std::vector<int>& input_part, double resolution);
+
+/// Adds to `audit` the sizes of the input regions `lost` (input region ids) and of the region
+/// contacts (pairs of input regions) lost.
+void audit_regions(const StructuralModel& input, const std::vector<int>& lost,
+                   const std::vector<std::pair<int, int>>& contacts_lost, FeatureAudit& audit);
 
 }  // namespace voroseal

@@ -231,9 +231,20 @@ class RemeshModule final : public Module {
                         {"location", {x.x(), x.y(), x.z()}},
                         {"features", features_json(m.features)}});
     }
+    const double cell = t.features.resolution;
     nlohmann::json lost = nlohmann::json::array();
-    for (int r : lost_regions(t))
-      lost.push_back({{"index", r}, {"name", input.regions[static_cast<size_t>(r)].name}});
+    for (const LostRegion& r : t.features.regions_lost)
+      lost.push_back({{"index", r.region},
+                      {"name", input.regions[static_cast<size_t>(r.region)].name},
+                      {"thickness", r.thickness},
+                      {"larger_than_resolution", r.thickness >= cell}});
+    nlohmann::json contacts_lost = nlohmann::json::array();
+    for (const LostRegionContact& c : t.features.region_contacts_lost)
+      contacts_lost.push_back({{"regions", {c.a, c.b}},
+                               {"names", {input.regions[static_cast<size_t>(c.a)].name,
+                                          input.regions[static_cast<size_t>(c.b)].name}},
+                               {"width", c.width},
+                               {"larger_than_resolution", c.width >= cell}});
     nlohmann::json features = nlohmann::json::array();
     for (const LostFeature& f : t.features.lost) {
       const Vec3 x = f.location + input.frame.origin;
@@ -248,7 +259,7 @@ class RemeshModule final : public Module {
             {"after", counts(t.output)},
             {"regions_preserved", t.regions_preserved},
             {"regions_lost", lost},
-            {"region_contacts_lost", t.contacts_lost},
+            {"region_contacts_lost", contacts_lost},
             {"region_contacts_gained", t.contacts_gained},
             {"merges", merges},
             {"resolution", t.features.resolution},
@@ -269,13 +280,6 @@ class RemeshModule final : public Module {
       for (int c : input.corners[static_cast<size_t>(f.id)].contacts) add("contact " + std::to_string(c));
     return name;
   }
-  // Input regions with no output region: thinner than the resolution, or merged with a neighbour.
-  static std::vector<int> lost_regions(const TopologyReport& t) {
-    std::vector<int> lost;
-    for (size_t r = 0; r < t.output_region_of_input.size(); ++r)
-      if (t.output_region_of_input[r] < 0) lost.push_back(static_cast<int>(r));
-    return lost;
-  }
   static void print_topology(const Logger& log, const TopologyReport& t, const StructuralModel& input) {
     char line[256];
     std::snprintf(line, sizeof line, "remesh: surfaces %d -> %d, contacts %d -> %d, corners %d -> %d, regions %d -> %d%s",
@@ -283,13 +287,21 @@ class RemeshModule final : public Module {
                   t.output.corners, t.input.regions, t.output.regions,
                   t.regions_preserved ? " (regions and their adjacency preserved)" : " (REGIONS CHANGED)");
     log.info(line);
-    for (int r : lost_regions(t))
-      log.warning("remesh: input region " + std::to_string(r) + " '" + input.regions[static_cast<size_t>(r)].name +
-                  "' has no region of its own in the output (thinner than the resolution, or merged with a "
-                  "neighbour): try a finer --edge-length or a smaller --min-feature");
+    const double cell = t.features.resolution;
+    auto compared = [&](double size) {
+      std::snprintf(line, sizeof line, "%.4g, %s a cell of %.4g", size, size < cell ? "smaller than" : "LARGER than",
+                    cell);
+      return std::string(line);
+    };
+    for (const LostRegion& r : t.features.regions_lost)
+      log.warning("remesh: input region " + std::to_string(r.region) + " '" +
+                  input.regions[static_cast<size_t>(r.region)].name +
+                  "' has no region of its own in the output (thickness 2V/A " + compared(r.thickness) +
+                  "): try a finer --edge-length or a smaller --min-feature");
     auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
-    for (const auto& [a, b] : t.contacts_lost)
-      log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the input, not in the output");
+    for (const LostRegionContact& c : t.features.region_contacts_lost)
+      log.warning("remesh: regions " + name(c.a) + " and " + name(c.b) +
+                  " touch in the input, not in the output (widest part between them " + compared(c.width) + ")");
     for (const auto& [a, b] : t.contacts_gained)
       log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the output, not in the input");
     if (!t.merges.empty())
