@@ -101,5 +101,20 @@ TEST(Remesh, KeepsAFlatLayerThinnerThanTheResolution) {
   EXPECT_EQ(audit.larger_than_resolution(), 0);
 }
 
+TEST(FeatureAudit, SizesLostRegionsAndRegionContacts) {
+  // The unit box cut at mid-height: each region is 0.5 thick (V = 0.5, sides 1 + 4 × 0.5 + 1:
+  // 2V/A = 0.25) and the horizon between them a 1 × 1 square (width 2 × 1 / 4 = 0.5).
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  ASSERT_EQ(input.regions.size(), 2u);
+  FeatureAudit audit;
+  audit.resolution = 0.3;
+  audit_regions(input, {0}, {{0, 1}}, audit);
+  ASSERT_EQ(audit.regions_lost.size(), 1u);
+  EXPECT_NEAR(audit.regions_lost[0].thickness, 0.25, 1e-9);
+  ASSERT_EQ(audit.region_contacts_lost.size(), 1u);
+  EXPECT_NEAR(audit.region_contacts_lost[0].width, 0.5, 1e-9);
+  EXPECT_EQ(audit.larger_than_resolution(), 1);  // the contact, not the region
+}
+
 }  // namespace
 }  // namespace voroseal
