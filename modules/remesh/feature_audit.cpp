@@ -23,14 +23,18 @@ namespace {
 std::vector<std::pair<double, Vec3>> part_widths(const StructuralModel& model) {
   const ModelTriangles mt = flatten(model);
   const std::vector<Vec3>& p = model.vertices;
-  std::vector<double> area(model.parts.size(), 0.0), perimeter(model.parts.size(), 0.0);
-  std::vector<Vec3> somewhere(model.parts.size(), Vec3::Zero());
+  std::vector<double> area(model.parts.size(), 0.0), perimeter(model.parts.size(), 0.0),
+      largest(model.parts.size(), -1.0);
+  std::vector<Vec3> somewhere(model.parts.size(), Vec3::Zero());  // centroid of its largest triangle
   std::vector<std::map<std::pair<int, int>, int>> edges(model.parts.size());
   for (size_t t = 0; t < mt.triangles.size(); ++t) {
     const Triangle& f = mt.triangles[t];
     const int part = mt.part[t];
     const double a = 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
-    if (a > area[part]) somewhere[part] = (p[f[0]] + p[f[1]] + p[f[2]]) / 3.0;  // its largest triangle
+    if (a > largest[part]) {
+      largest[part] = a;
+      somewhere[part] = (p[f[0]] + p[f[1]] + p[f[2]]) / 3.0;
+    }
     area[part] += a;
     for (int i = 0; i < 3; ++i) ++edges[part][std::minmax(f[i], f[(i + 1) % 3])];
   }
@@ -44,7 +48,6 @@ std::vector<std::pair<double, Vec3>> part_widths(const StructuralModel& model) {
   }
   return out;
 }
-
 
 // The input parts meeting at every contact and at every corner of `m` (parts mapped by `to_input`).
 using PartSet = std::vector<int>;

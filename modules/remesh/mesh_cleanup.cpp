@@ -174,13 +174,19 @@ class Editor {
   // The triangles of `part` around v when they close a fan around it (every neighbour in two of
   // them), else 0.
   int closed_fan_size(int v, int part) {
-    fan_count_.clear();
+    fan_count_.clear();  // (neighbour, triangles of the fan holding it); a fan has a few
     int n = 0;
     for (int t : star(v)) {
       if (s_.triangle_part[t] != part) continue;
       ++n;
-      for (int w : s_.triangles[t])
-        if (w != v) ++fan_count_[w];
+      for (int w : s_.triangles[t]) {
+        if (w == v) continue;
+        auto it = std::find_if(fan_count_.begin(), fan_count_.end(), [w](const auto& e) { return e.first == w; });
+        if (it == fan_count_.end())
+          fan_count_.push_back({w, 1});
+        else
+          ++it->second;
+      }
     }
     for (const auto& [w, k] : fan_count_)
       if (k != 2) return 0;
@@ -637,7 +643,7 @@ class Editor {
   std::vector<std::pair<int, int>> edges_;
   std::vector<int> fan_tris_, verts_, ring_;
   std::vector<Blade> fan_;
-  std::map<int, int> fan_count_;
+  std::vector<std::pair<int, int>> fan_count_;
 };
 
 // Applies an edit as a transaction: `affected_before` gives the triangles whose violations the
@@ -717,7 +723,8 @@ int remove_valence3(Editor& e) {
 }
 
 // Vertices on contacts cannot go, but a part that runs on across the contact (a horizon ending
-// on a fault: the fault part holds the contact) may close a fan of three triangles around one. On a flat part that fan is a dent or a bump no tet mesh keeping the surface can fill
+// on a fault: the fault part holds the contact) may close a fan of three triangles around one.
+// On a flat part that fan is a dent or a bump that no tet mesh keeping the surface fills
 // without a flat tetrahedron (remeshed CloudSpin_fixed: 0.03°). Flipping a side of the fan,
 // toward the best-shaped pair, gives the vertex four triangles there.
 int raise_valence3_on_contacts(Editor& e) {
@@ -725,7 +732,12 @@ int raise_valence3_on_contacts(Editor& e) {
   std::vector<int> edge;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
-    const std::vector<int> star = e.star(v);
+    const std::vector<int>& ring = e.star(v);
+    if (ring.size() < 4) continue;
+    bool several_parts = false;
+    for (int t : ring) several_parts = several_parts || e.s_.triangle_part[t] != e.s_.triangle_part[ring[0]];
+    if (!several_parts) continue;
+    const std::vector<int> star = ring;
     std::map<int, std::vector<int>> by_part;
     for (int t : star) by_part[e.s_.triangle_part[t]].push_back(t);
     // Inside one part the fan goes (remove_valence3); a surface vertex may also sit where
@@ -1123,11 +1135,11 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
     if (e.projector_->distance_to_part(e.s_.triangle_part[t1], middle) > e.tolerance_) return false;
   }
-  // Nor does it leave a contact vertex three triangles of the part (see raise_valence3_on_contacts).
+  // Nor does it leave a vertex where other parts meet three triangles of this part closing a fan
+  // around it (see raise_valence3_on_contacts).
   if (!strict)
     for (int w : {u, v})
-      if (e.s_.features[w].kind != VertexFeature::Surface && e.closed_fan_size(w, e.s_.triangle_part[t1]) == 4)
-        return false;
+      if (e.star(w).size() > 4 && e.closed_fan_size(w, e.s_.triangle_part[t1]) == 4) return false;
   const Triangle g1{c, u, d}, g2{d, v, c};
   const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
   if (!strict && after <= before + 1e-3) return false;
