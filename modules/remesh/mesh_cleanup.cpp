@@ -426,7 +426,8 @@ class Editor {
     // increasing triangle order.
     for (const auto& [a, b] : find_self_intersections(s_.vertices, tris))
       c.crossings.emplace_back(index[a], index[b]);
-    // Holes and leaks can only be on edges that are not two consistent triangles of one part.
+    // Holes and leaks can only be on edges that are not two consistent triangles of one part;
+    // those can only hold a pleat (see edge_violations()).
     std::vector<std::pair<std::pair<int, int>, int>> edges;
     for (size_t t = 0; t < s_.triangles.size(); ++t) {
       if (dead_[t]) continue;
@@ -442,7 +443,7 @@ class Editor {
       const bool plain = j - i == 2 && s_.triangle_part[edges[i].second] == s_.triangle_part[edges[i + 1].second] &&
                          has_directed_edge(s_.triangles[edges[i].second], a, b) !=
                              has_directed_edge(s_.triangles[edges[i + 1].second], a, b);
-      if (!plain) {
+      if (!plain || pleat(edges[i].second, edges[i + 1].second)) {
         Violations v;
         edge_violations(a, b, v);
         if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
@@ -577,7 +578,14 @@ class Editor {
     return components - distinct;
   }
 
-  // Holes and leaks on edge (a, b), see Violations.
+  // Two triangles of a part sharing an edge, the part turning back onto itself across it
+  // (normals nearly opposite): a pleat, a fold of the part.
+  bool pleat(int t0, int t1) const {
+    const Vec3 n0 = normal(t0), n1 = normal(t1);
+    return n0.dot(n1) < -std::cos(kFoldDeg * M_PI / 180.0) * n0.norm() * n1.norm();
+  }
+
+  // Holes, leaks and folds on edge (a, b), see Violations.
   void edge_violations(int a, int b, Violations& out) {
     edge_triangles(a, b, fan_tris_);
     const size_t k = fan_tris_.size();
@@ -592,9 +600,7 @@ class Editor {
         ++out.leaks;
         return;
       }
-      // A pleat: the part turns back onto itself across the edge (normals nearly opposite).
-      const Vec3 n0 = normal(t0), n1 = normal(t1);
-      if (n0.dot(n1) < -std::cos(kFoldDeg * M_PI / 180.0) * n0.norm() * n1.norm()) ++out.folds;
+      if (pleat(t0, t1)) ++out.folds;
       return;
     }
     // Radial order of the triangles around the edge.
