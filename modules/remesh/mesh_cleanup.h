@@ -3,8 +3,8 @@
 // triangles with edge flips and tangential smoothing, keep every vertex on the input feature it
 // samples, and resolve the remaining intersections. Every edit is a transaction checked against
 // what makes a structural model invalid (holes, leaks between regions, crossings, degenerate
-// triangles, pinches, folds at contacts) and undone when it makes that worse; a last repair pass
-// makes it better where it can and counts what is left.
+// triangles, pinches, folds at contacts and pleats) and undone when it makes that worse; a last
+// repair pass makes it better where it can and counts what is left.
 #pragma once
 
 #include "framework/model/structural_model.h"

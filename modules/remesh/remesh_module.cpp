@@ -100,6 +100,7 @@ class RemeshModule final : public Module {
 
   void run(Context& context, const Parameters& parameters) const override {
     if (!context.model) throw ModelError("remesh: no model");
+    warn_about_region_signs(*context.model, context.log);
     SeedOptions options;
     if (parameters.has("seeds")) {
       options.num_seeds = static_cast<int>(parameters.get_int("seeds"));
@@ -190,7 +191,7 @@ class RemeshModule final : public Module {
                           std::to_string(result.cleanup.degenerate_left) + " degenerate triangles, " +
                           std::to_string(result.cleanup.pinches_left) + " pinched vertices and " +
                           std::to_string(result.cleanup.folds_left) +
-                          " folds at contacts (run `voroseal check` on the output)");
+                          " folds (run `voroseal check` on the output)");
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 
@@ -265,6 +266,20 @@ class RemeshModule final : public Module {
             {"resolution", t.features.resolution},
             {"features_lost", features},
             {"features_lost_larger_than_resolution", t.features.larger_than_resolution()}};
+  }
+  // The clean-up keeps every triangle facing the input's regions: when the input lists a
+  // region's sides so that they do not enclose it (a wrong volume sign, what `voroseal check`
+  // calls region_orientation), its "leaks" refer to regions that are not there.
+  static void warn_about_region_signs(const StructuralModel& model, const Logger& log) {
+    std::string wrong;
+    for (const Region& r : model.regions)
+      if (!r.sides.empty() && !(model.signed_volume(r.sides) < 0.0)) wrong += (wrong.empty() ? "'" : ", '") + r.name + "'";
+    if (!model.universe.sides.empty() && !(model.signed_volume(model.universe.sides) > 0.0))
+      wrong += (wrong.empty() ? "'" : ", '") + model.universe.name + "'";
+    if (!wrong.empty())
+      log.warning("remesh: input regions " + wrong +
+                  " do not enclose their volume with the sides listed (run `voroseal check` on the input): the "
+                  "clean-up's leak counts refer to them, the output's regions are inferred from its surfaces");
   }
   static const char* feature_kind(VertexFeature::Kind kind) {
     return kind == VertexFeature::Surface ? "surface" : kind == VertexFeature::Contact ? "contact" : "corner";

@@ -68,6 +68,35 @@ TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
   EXPECT_EQ(topology.at("features_lost_larger_than_resolution").get<int>(), 0);
 }
 
+// Everything the module logs at warning level, for a model.
+std::string remesh_warnings(const StructuralModel& model) {
+  ModuleRegistry registry;
+  voroseal_register_remesh(registry);
+  const Module& module = registry.get("remesh");
+  std::FILE* out = std::tmpfile();
+  Logger log(LogLevel::Warning, out);
+  Progress progress(false);
+  Context context(log, progress);
+  context.model = std::make_shared<StructuralModel>(model);
+  module.run(context, Parameters(module.parameters(), {{"seeds", 300}, {"iterations", 10}}));
+  std::rewind(out);
+  std::string text;
+  for (int c = std::fgetc(out); c != EOF; c = std::fgetc(out)) text += static_cast<char>(c);
+  std::fclose(out);
+  return text;
+}
+
+TEST(RemeshModule, WarnsWhenTheInputRegionsDoNotEncloseTheirVolume) {
+  const StructuralModel good = build_model(test::lattice_box(6, true));
+  ASSERT_EQ(good.regions.size(), 2u);
+  EXPECT_EQ(remesh_warnings(good).find("do not enclose"), std::string::npos);
+  StructuralModel bad = good;  // the sides of one region listed the wrong way round
+  for (Side& side : bad.regions[0].sides) side.positive = !side.positive;
+  const std::string warnings = remesh_warnings(bad);
+  EXPECT_NE(warnings.find("do not enclose"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("'" + bad.regions[0].name + "'"), std::string::npos) << warnings;
+}
+
 TEST(RemeshModule, RejectsBadParameters) {
   test::ModuleHarness harness(voroseal_register_remesh, "remesh");
   const Module& module = harness.module;
