@@ -123,6 +123,9 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 }
 
 const std::vector<std::string> kVolumeColumns = {"tets", "min_dihedral_deg"};
+// From the remesh step's topology report: whether the regions and their adjacency were kept,
+// and how many input features have no counterpart (all / larger than a Voronoi cell).
+const std::vector<std::string> kRemeshColumns = {"regions_preserved", "features_lost", "features_lost_larger_than_cell"};
 
 // An inline SVG bar chart of a histogram.
 std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,
@@ -192,6 +195,7 @@ RunMeasures measure_run(const Context& context) {
   json& row = measures.row;
   for (const std::string& key : summary_measure_keys()) row[key] = nullptr;
   for (const std::string& key : kVolumeColumns) row[key] = nullptr;
+  for (const std::string& key : kRemeshColumns) row[key] = nullptr;
   if (!context.model) return measures;
   const StructuralModel& model = *context.model;
 
@@ -231,6 +235,15 @@ RunMeasures measure_run(const Context& context) {
     if (t.contains("min_dihedral_deg")) row["min_dihedral_deg"] = t["min_dihedral_deg"];
   }
   if (row["tets"].is_null() && context.volume) row["tets"] = static_cast<long>(context.volume->tets.size());
+  if (context.report.contains("remesh") && context.report["remesh"].is_object() &&
+      context.report["remesh"].contains("topology")) {
+    const json& t = context.report["remesh"]["topology"];
+    if (t.contains("regions_preserved")) row["regions_preserved"] = t["regions_preserved"];
+    if (t.contains("features_lost") && t["features_lost"].is_array())
+      row["features_lost"] = static_cast<long>(t["features_lost"].size());
+    if (t.contains("features_lost_larger_than_resolution"))
+      row["features_lost_larger_than_cell"] = t["features_lost_larger_than_resolution"];
+  }
 
   const std::vector<TriangleQuality> all = triangle_qualities(model.vertices, flat.triangles);
   std::vector<double> q(all.size()), angle(all.size());
@@ -281,6 +294,7 @@ std::vector<std::string> summary_columns(const StudyOutcome& outcome) {
   columns.push_back("status");
   for (const std::string& key : summary_measure_keys()) columns.push_back(key);
   for (const std::string& key : kVolumeColumns) columns.push_back(key);
+  for (const std::string& key : kRemeshColumns) columns.push_back(key);
   columns.push_back("time_read_s");
   for (const std::string& c : step_time_columns(outcome.study)) columns.push_back(c);
   columns.insert(columns.end(), {"time_write_s", "time_picture_s", "time_total_s", "error"});
@@ -301,6 +315,8 @@ json summary_rows(const StudyOutcome& outcome) {
     for (const std::string& key : summary_measure_keys())
       row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
     for (const std::string& key : kVolumeColumns)
+      row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
+    for (const std::string& key : kRemeshColumns)
       row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
     row["time_read_s"] = r.read_seconds;
     for (size_t s = 0; s < times.size(); ++s)

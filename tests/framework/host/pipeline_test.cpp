@@ -295,7 +295,8 @@ TEST(RunStudy, FailedRunsAreRecordedAndTheStudyGoesOn) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
   EXPECT_EQ(csv.rfind("run,model,key,fail,status,vertices,triangles,surfaces,contacts,corners,regions,min_angle_deg,"
                       "pct_triangles_angle_below_30,avg_quality,min_quality,area,bbox_diagonal,hausdorff_pct,tets,"
-                      "min_dihedral_deg,time_read_s,time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
+                      "min_dihedral_deg,regions_preserved,features_lost,features_lost_larger_than_cell,time_read_s,"
+                      "time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
                       "time_total_s,error\n",
                       0),
             0u)
@@ -380,6 +381,15 @@ TEST(RunStudy, TheStatsModulesNumbersFillTheRow) {
   EXPECT_EQ(measured.row.at("hausdorff_pct"), 0.25);
   EXPECT_EQ(measured.row.at("min_quality"), 0.5);
   EXPECT_EQ(measured.row.at("triangles"), context.model->num_triangles()) << "what stats did not give is measured";
+  EXPECT_TRUE(measured.row.at("regions_preserved").is_null());
+  context.report["remesh"] = {{"topology",
+                               {{"regions_preserved", false},
+                                {"features_lost", json::array({json::object(), json::object()})},
+                                {"features_lost_larger_than_resolution", 1}}}};
+  measured = measure_run(context);
+  EXPECT_EQ(measured.row.at("regions_preserved"), false);
+  EXPECT_EQ(measured.row.at("features_lost"), 2);
+  EXPECT_EQ(measured.row.at("features_lost_larger_than_cell"), 1);
 }
 
 TEST(RunStudy, BuiltInCheckAndStatsSteps) {

@@ -36,7 +36,8 @@ TEST(StudyReport, ColumnsNameSweptParametersAndNumberRepeatedSteps) {
   const std::vector<std::string> columns = summary_columns(sample_outcome());
   const std::vector<std::string> head(columns.begin(), columns.begin() + 5);
   EXPECT_EQ(head, (std::vector<std::string>{"run", "model", "key", "edge-length", "status"}));
-  for (const char* c : {"time_remesh_1_s", "time_stats_s", "time_remesh_2_s", "hausdorff_pct", "tets", "error"})
+  for (const char* c : {"time_remesh_1_s", "time_stats_s", "time_remesh_2_s", "hausdorff_pct", "tets",
+                        "regions_preserved", "features_lost_larger_than_cell", "error"})
     EXPECT_NE(std::find(columns.begin(), columns.end(), c), columns.end()) << c;
   EXPECT_EQ(columns.back(), "error");
 }
