@@ -125,7 +125,8 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 const std::vector<std::string> kVolumeColumns = {"tets", "min_dihedral_deg"};
 // From the remesh step's topology report: whether the regions and their adjacency were kept,
 // and how many input features have no counterpart (all / larger than a Voronoi cell).
-const std::vector<std::string> kRemeshColumns = {"regions_preserved", "features_lost", "features_lost_larger_than_cell"};
+const std::vector<std::string> kRemeshColumns = {"regions_preserved", "features_lost",
+                                                 "features_lost_larger_than_cell"};
 
 // An inline SVG bar chart of a histogram.
 std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,

@@ -1,5 +1,7 @@
-// The `remesh` module: optimises seeds on the model (paper §3.1). Mesh building (§3.2) comes
-// next in this module; for now the result is the optimised seeds (--dump-seeds) and the report.
+// The `remesh` module: the remesher (remesh.h) behind the plugin interface: its parameters,
+// the JSON report (seeds, optimisation history, mesh building, clean-up, topology and feature
+// audit, timings), the log lines, --dump-seeds and --tetmesh.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -253,7 +255,7 @@ class RemeshModule final : public Module {
                           {"id", f.id},
                           {"name", feature_name(f, input)},
                           {"size", f.size},
-                          {"larger_than_resolution", f.size >= t.features.resolution},
+                          {"larger_than_resolution", f.size >= cell},
                           {"location", {x.x(), x.y(), x.z()}}});
     }
     return {{"before", counts(t.input)},
@@ -273,7 +275,8 @@ class RemeshModule final : public Module {
   static void warn_about_region_signs(const StructuralModel& model, const Logger& log) {
     std::string wrong;
     for (const Region& r : model.regions)
-      if (!r.sides.empty() && !(model.signed_volume(r.sides) < 0.0)) wrong += (wrong.empty() ? "'" : ", '") + r.name + "'";
+      if (!r.sides.empty() && !(model.signed_volume(r.sides) < 0.0))
+        wrong += (wrong.empty() ? "'" : ", '") + r.name + "'";
     if (!model.universe.sides.empty() && !(model.signed_volume(model.universe.sides) > 0.0))
       wrong += (wrong.empty() ? "'" : ", '") + model.universe.name + "'";
     if (!wrong.empty())
@@ -322,8 +325,8 @@ class RemeshModule final : public Module {
     if (!t.merges.empty())
       log.info("remesh: " + std::to_string(t.merges.size()) +
                " features merged where the resolution is coarser than them (see the JSON report)");
-    const int large = t.features.larger_than_resolution();
-    const int small = static_cast<int>(t.features.lost.size()) - large;
+    const int small = static_cast<int>(std::count_if(t.features.lost.begin(), t.features.lost.end(),
+                                                     [&](const LostFeature& f) { return f.size < cell; }));
     if (small > 0) {
       std::snprintf(line, sizeof line,
                     "remesh: %d input surfaces, contacts or corners smaller than a cell (%.4g) have no "
@@ -332,11 +335,13 @@ class RemeshModule final : public Module {
       log.info(line);
     }
     for (const LostFeature& f : t.features.lost) {
-      if (f.size < t.features.resolution) continue;
+      if (f.size < cell) continue;
       const Vec3 x = f.location + input.frame.origin;
-      std::snprintf(line, sizeof line, "remesh: input %s %d (%s, size %.4g, at %.10g %.10g %.10g)", feature_kind(f.kind),
-                    f.id, feature_name(f, input).c_str(), f.size, x.x(), x.y(), x.z());
-      log.warning(std::string(line) + " is larger than a cell and has no counterpart in the output: try a finer --edge-length or a smaller --min-feature");
+      std::snprintf(line, sizeof line, "size %.4g, at %.10g %.10g %.10g", f.size, x.x(), x.y(), x.z());
+      log.warning("remesh: input " + std::string(feature_kind(f.kind)) + " " + std::to_string(f.id) + " (" +
+                  feature_name(f, input) + ", " + line +
+                  ") is larger than a cell and has no counterpart in the output: try a finer --edge-length or a "
+                  "smaller --min-feature");
     }
   }
 };
