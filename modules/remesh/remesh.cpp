@@ -70,23 +70,37 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
       }
     match[r] = best;
   }
-  // Order output regions as the input's; keep names and layers.
+  // Order output regions as the input's, the one with most sides first where several match one
+  // input region; keep names and layers. The others (pockets the remesh closed between two
+  // surfaces) are named after it with a suffix and reported.
   std::vector<int> order(out.regions.size());
   for (size_t r = 0; r < order.size(); ++r) order[r] = static_cast<int>(r);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     const int ka = match[a] < 0 ? 1 << 30 : match[a], kb = match[b] < 0 ? 1 << 30 : match[b];
-    return ka < kb;
+    if (ka != kb) return ka < kb;
+    return out.regions[a].sides.size() > out.regions[b].sides.size();
   });
   std::vector<Region> regions;
   std::vector<int> new_index(out.regions.size());
   std::vector<int> output_of_input(input.regions.size(), -1);
+  std::vector<GainedRegion> gained;
   for (int r : order) {
     Region region = out.regions[r];
-    if (match[r] >= 0) {
+    const int index = static_cast<int>(regions.size());
+    if (match[r] >= 0 && output_of_input[match[r]] < 0) {
       region.name = input.regions[match[r]].name;
-      if (output_of_input[match[r]] < 0) output_of_input[match[r]] = static_cast<int>(regions.size());
+      output_of_input[match[r]] = index;
+    } else {
+      region.name = (match[r] >= 0 ? input.regions[match[r]].name : std::string("region")) + "_pocket" +
+                    std::to_string(gained.size() + 1);
+      BoundingBox box;
+      for (const Side& side : region.sides)
+        for (int v : out.parts[side.part].model_vertex) box.extend(out.vertices[v]);
+      const Vec3 middle = box.empty() ? Vec3(Vec3::Zero()) : box.center();
+      gained.push_back({index, match[r], std::abs(out.signed_volume(region.sides)),
+                        middle + out.frame.origin - input.frame.origin});
     }
-    new_index[r] = static_cast<int>(regions.size());
+    new_index[r] = index;
     regions.push_back(std::move(region));
   }
   out.regions = std::move(regions);
@@ -103,6 +117,7 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
     report->input = counts_of(input);
     report->output = counts_of(out);
     report->output_region_of_input = output_of_input;
+    report->regions_gained = gained;
     bool preserved = out.regions.size() == input.regions.size();
     for (int r : output_of_input) preserved = preserved && r >= 0;
     // Adjacency through the matching: pairs of input regions that touch in one model only.

@@ -40,10 +40,20 @@ struct FeatureCounts {
   int surfaces = 0, contacts = 0, corners = 0, regions = 0;
 };
 
+/// An output region that is not the counterpart of an input region: a pocket the remesh closed
+/// between surfaces (or a second piece of one input region).
+struct GainedRegion {
+  int output_region = -1;
+  int like_input = -1;           // the input region its sides face (-1: none)
+  double volume = 0.0;
+  Vec3 location = Vec3::Zero();  // middle of its bounding box, the input's local frame
+};
+
 struct TopologyReport {
   FeatureCounts input, output;
   bool regions_preserved = false;   // same count and adjacency, matched by their sides
   std::vector<int> output_region_of_input;  // -1 when an input region was lost
+  std::vector<GainedRegion> regions_gained;
   /// Pairs of input regions (a < b, both kept) that touch in the input but not in the output,
   /// and the other way round.
   std::vector<std::pair<int, int>> contacts_lost, contacts_gained;

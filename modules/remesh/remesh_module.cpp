@@ -241,6 +241,15 @@ class RemeshModule final : public Module {
                       {"name", input.regions[static_cast<size_t>(r.region)].name},
                       {"thickness", r.thickness},
                       {"larger_than_resolution", r.thickness >= cell}});
+    nlohmann::json gained = nlohmann::json::array();
+    for (const GainedRegion& g : t.regions_gained) {
+      const Vec3 x = g.location + input.frame.origin;
+      gained.push_back({{"index", g.output_region},
+                        {"like", g.like_input >= 0 ? nlohmann::json(input.regions[static_cast<size_t>(g.like_input)].name)
+                                                   : nlohmann::json()},
+                        {"volume", g.volume},
+                        {"location", {x.x(), x.y(), x.z()}}});
+    }
     nlohmann::json contacts_lost = nlohmann::json::array();
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       contacts_lost.push_back({{"regions", {c.a, c.b}},
@@ -262,6 +271,7 @@ class RemeshModule final : public Module {
             {"after", counts(t.output)},
             {"regions_preserved", t.regions_preserved},
             {"regions_lost", lost},
+            {"regions_gained", gained},
             {"region_contacts_lost", contacts_lost},
             {"region_contacts_gained", t.contacts_gained},
             {"merges", merges},
@@ -316,6 +326,15 @@ class RemeshModule final : public Module {
                   input.regions[static_cast<size_t>(r.region)].name +
                   "' has no region of its own in the output (thickness 2V/A " + compared(r.thickness) +
                   "): try a finer --edge-length or a smaller --min-feature");
+    for (const GainedRegion& g : t.regions_gained) {
+      const Vec3 x = g.location + input.frame.origin;
+      std::snprintf(line, sizeof line, "volume %.4g, around %.10g %.10g %.10g", g.volume, x.x(), x.y(), x.z());
+      log.warning("remesh: output region " + std::to_string(g.output_region) + " (" + line +
+                  ") is no input region of its own: a pocket closed between surfaces" +
+                  (g.like_input >= 0 ? " inside '" + input.regions[static_cast<size_t>(g.like_input)].name + "'"
+                                     : std::string()) +
+                  "; try a finer --edge-length");
+    }
     auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       log.warning("remesh: regions " + name(c.a) + " and " + name(c.b) +

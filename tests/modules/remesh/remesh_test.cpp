@@ -116,5 +116,46 @@ TEST(FeatureAudit, SizesLostRegionsAndRegionContacts) {
   EXPECT_EQ(audit.larger_than_resolution(), 1);  // the contact, not the region
 }
 
+TEST(ModelFromRemeshed, ReportsAPocketAsAGainedRegionAndKeepsTheInputRegionsOnTheLargeOnes) {
+  // The box cut by its horizon, as its own remesh, plus a small closed tetrahedron of horizon
+  // triangles floating in the upper region: a pocket the input does not have.
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  ASSERT_EQ(input.regions.size(), 2u);
+  RemeshedSurface s;
+  s.vertices = input.vertices;
+  const ModelTriangles flat = flatten(input);
+  s.triangles = flat.triangles;
+  s.triangle_part = flat.part;
+  s.features.assign(s.vertices.size(), VertexFeature{});
+  int horizon = -1;
+  for (size_t p = 0; p < input.parts.size(); ++p)
+    if (input.parts[p].name.find("horizon") != std::string::npos) horizon = static_cast<int>(p);
+  ASSERT_GE(horizon, 0);
+  const int a = static_cast<int>(s.vertices.size());
+  for (const Vec3& x : {Vec3(0.45, 0.45, 0.7), Vec3(0.55, 0.45, 0.7), Vec3(0.5, 0.55, 0.7), Vec3(0.5, 0.5, 0.8)}) {
+    s.vertices.push_back(x - input.frame.origin);
+    s.features.push_back({VertexFeature::Surface, horizon});
+  }
+  for (const Triangle& f : {Triangle{a, a + 2, a + 1}, Triangle{a, a + 1, a + 3}, Triangle{a + 1, a + 2, a + 3},
+                            Triangle{a + 2, a, a + 3}}) {
+    s.triangles.push_back(f);
+    s.triangle_part.push_back(horizon);
+  }
+  TopologyReport report;
+  const StructuralModel out = model_from_remeshed(s, input, &report, 1.0);
+  ASSERT_EQ(out.regions.size(), 3u);
+  EXPECT_FALSE(report.regions_preserved);
+  ASSERT_EQ(report.regions_gained.size(), 1u);
+  EXPECT_NEAR(report.regions_gained[0].volume, 0.005 * 0.1 / 3.0, 1e-12);
+  EXPECT_NEAR((report.regions_gained[0].location + input.frame.origin - Vec3(0.5, 0.5, 0.75)).norm(), 0.0, 1e-9);
+  for (int k = 0; k < 2; ++k) {  // each input region is the large output one, under its name
+    const int r = report.output_region_of_input[k];
+    ASSERT_GE(r, 0);
+    EXPECT_NE(r, report.regions_gained[0].output_region);
+    EXPECT_EQ(out.regions[r].name, input.regions[k].name);
+  }
+  EXPECT_NE(out.regions[report.regions_gained[0].output_region].name.find("_pocket1"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace voroseal
