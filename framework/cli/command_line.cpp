@@ -116,7 +116,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
   int threads = 0;
   bool quiet = false, verbose = false;
   app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
-  app.add_flag("-q,--quiet", quiet, "no progress and no log on stderr, only results and errors");
+  app.add_flag("-q,--quiet", quiet, "no progress and no info lines on stderr: only results, warnings and errors");
   app.add_flag("-v,--verbose", verbose, "debug log on stderr");
   bool json_output = false;
   app.add_flag("--json", json_output, "print the result (module report, study summary) as JSON on stdout");
