@@ -19,13 +19,17 @@ int FeatureAudit::larger_than_resolution() const {
 
 namespace {
 
-/// 2 × area / perimeter of every part (perimeter: edges with one triangle of the part).
-std::vector<std::pair<double, Vec3>> part_widths(const StructuralModel& model) {
+struct PartMeasure {
+  double width = 0.0;             // 2 × area / perimeter (perimeter: edges with one triangle)
+  double area = 0.0;
+  Vec3 somewhere = Vec3::Zero();  // centroid of its largest triangle
+};
+
+std::vector<PartMeasure> part_measures(const StructuralModel& model) {
   const ModelTriangles mt = flatten(model);
   const std::vector<Vec3>& p = model.vertices;
-  std::vector<double> area(model.parts.size(), 0.0), perimeter(model.parts.size(), 0.0),
-      largest(model.parts.size(), -1.0);
-  std::vector<Vec3> somewhere(model.parts.size(), Vec3::Zero());  // centroid of its largest triangle
+  std::vector<PartMeasure> out(model.parts.size());
+  std::vector<double> perimeter(model.parts.size(), 0.0), largest(model.parts.size(), -1.0);
   std::vector<std::map<std::pair<int, int>, int>> edges(model.parts.size());
   for (size_t t = 0; t < mt.triangles.size(); ++t) {
     const Triangle& f = mt.triangles[t];
@@ -33,18 +37,16 @@ std::vector<std::pair<double, Vec3>> part_widths(const StructuralModel& model) {
     const double a = 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
     if (a > largest[part]) {
       largest[part] = a;
-      somewhere[part] = (p[f[0]] + p[f[1]] + p[f[2]]) / 3.0;
+      out[part].somewhere = (p[f[0]] + p[f[1]] + p[f[2]]) / 3.0;
     }
-    area[part] += a;
+    out[part].area += a;
     for (int i = 0; i < 3; ++i) ++edges[part][std::minmax(f[i], f[(i + 1) % 3])];
   }
-  std::vector<std::pair<double, Vec3>> out(model.parts.size());
   for (size_t part = 0; part < model.parts.size(); ++part) {
     for (const auto& [e, n] : edges[part])
       if (n == 1) perimeter[part] += (p[e.first] - p[e.second]).norm();
     // A closed part (no border) is as wide as its area allows.
-    out[part] = {perimeter[part] > 0.0 ? 2.0 * area[part] / perimeter[part] : std::sqrt(area[part]),
-                 somewhere[part]};
+    out[part].width = perimeter[part] > 0.0 ? 2.0 * out[part].area / perimeter[part] : std::sqrt(out[part].area);
   }
   return out;
 }
@@ -128,7 +130,8 @@ double proximity(const StructuralModel& m, int c) {
 }  // namespace
 
 FeatureAudit audit_features(const StructuralModel& input, const StructuralModel& output,
-                            const std::vector<int>& input_part, double resolution) {
+                            const std::vector<int>& input_part, const std::vector<int>& regions_lost,
+                            const std::vector<std::pair<int, int>>& region_contacts_lost, double resolution) {
   FeatureAudit audit;
   audit.resolution = resolution;
   const std::vector<Vec3>& p = input.vertices;
@@ -143,12 +146,12 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
   // A contact is no larger than the narrowest part it bounds (two contacts along a thin strip
   // become one when the strip goes), a corner no larger than its contacts or the distance to
   // the nearest other corner.
-  const auto widths = part_widths(input);
+  const std::vector<PartMeasure> parts = part_measures(input);
   std::vector<double> length(input.contacts.size(), 0.0), spacing(input.corners.size());
   for (size_t c = 0; c < input.contacts.size(); ++c) {
     const std::vector<int>& line = input.contacts[c].vertices;
     for (size_t i = 1; i < line.size(); ++i) length[c] += (p[line[i]] - p[line[i - 1]]).norm();
-    for (int part : input.contacts[c].parts) length[c] = std::min(length[c], widths[part].first);
+    for (int part : input.contacts[c].parts) length[c] = std::min(length[c], parts[part].width);
   }
   for (size_t k = 0; k < input.corners.size(); ++k) {
     double nearest = std::numeric_limits<double>::infinity();
@@ -175,7 +178,7 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
 
   for (size_t part = 0; part < input.parts.size(); ++part)
     if (!part_kept[part])
-      audit.lost.push_back({VertexFeature::Surface, static_cast<int>(part), widths[part].first, widths[part].second});
+      audit.lost.push_back({VertexFeature::Surface, static_cast<int>(part), parts[part].width, parts[part].somewhere});
   for (size_t c = 0; c < input.contacts.size(); ++c)
     if (contact_lost[c]) {
       const std::vector<int>& line = input.contacts[c].vertices;
@@ -184,34 +187,23 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
   for (size_t k = 0; k < input.corners.size(); ++k)
     if (corner_lost[k])
       audit.lost.push_back({VertexFeature::Corner, static_cast<int>(k), spacing[k], p[input.corners[k].vertex]});
-  return audit;
-}
 
-void audit_regions(const StructuralModel& input, const std::vector<int>& lost,
-                   const std::vector<std::pair<int, int>>& contacts_lost, FeatureAudit& audit) {
-  const ModelTriangles mt = flatten(input);
-  const std::vector<Vec3>& p = input.vertices;
-  std::vector<double> part_area(input.parts.size(), 0.0);
-  for (size_t t = 0; t < mt.triangles.size(); ++t) {
-    const Triangle& f = mt.triangles[t];
-    part_area[mt.part[t]] += 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
-  }
-  for (int r : lost) {
+  for (int r : regions_lost) {
     const Region& region = input.regions[static_cast<size_t>(r)];
     double area = 0.0;
-    for (const Side& s : region.sides) area += part_area[s.part];
+    for (const Side& side : region.sides) area += parts[side.part].area;
     const double volume = std::abs(input.signed_volume(region.sides));
     audit.regions_lost.push_back({r, area > 0.0 ? 2.0 * volume / area : 0.0});
   }
-  const auto widths = part_widths(input);
   const auto sides = input.part_regions();
-  for (const auto& [a, b] : contacts_lost) {
+  for (const auto& [a, b] : region_contacts_lost) {
     double width = 0.0;
     for (size_t part = 0; part < sides.size(); ++part)
       if ((sides[part].first == a && sides[part].second == b) || (sides[part].first == b && sides[part].second == a))
-        width = std::max(width, widths[part].first);
+        width = std::max(width, parts[part].width);
     audit.region_contacts_lost.push_back({a, b, width});
   }
+  return audit;
 }
 
 }  // namespace voroseal

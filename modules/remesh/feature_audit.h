@@ -9,6 +9,7 @@
 // nearest other corner, or the size of its smallest contact if less.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "framework/core/types.h"
@@ -50,13 +51,11 @@ struct FeatureAudit {
 /// Compares `input` with its remeshed model `output`, whose part i remeshes input part
 /// `input_part[i]`. A part survives with an output part remeshing it; a contact with an output
 /// contact between the same input parts, a corner with an output corner where the same input
-/// parts meet (as many as the input has: the largest are counted kept).
+/// parts meet (as many as the input has: the largest are counted kept). Also sizes the input
+/// regions `regions_lost` (input region ids) and the region contacts (pairs of input regions)
+/// lost, found by the caller's region matching.
 FeatureAudit audit_features(const StructuralModel& input, const StructuralModel& output,
-                            const std::vector<int>& input_part, double resolution);
-
-/// Adds to `audit` the sizes of the input regions `lost` (input region ids) and of the region
-/// contacts (pairs of input regions) lost.
-void audit_regions(const StructuralModel& input, const std::vector<int>& lost,
-                   const std::vector<std::pair<int, int>>& contacts_lost, FeatureAudit& audit);
+                            const std::vector<int>& input_part, const std::vector<int>& regions_lost,
+                            const std::vector<std::pair<int, int>>& region_contacts_lost, double resolution);
 
 }  // namespace voroseal

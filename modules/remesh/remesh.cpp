@@ -143,11 +143,10 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
     report->regions_preserved = preserved && report->contacts_lost.empty() && report->contacts_gained.empty();
     std::vector<int> input_part(out.parts.size());
     for (size_t p = 0; p < out.parts.size(); ++p) input_part[p] = part_of_group[out.parts[p].source_group];
-    report->features = audit_features(input, out, input_part, resolution);
     std::vector<int> lost;
     for (size_t r = 0; r < output_of_input.size(); ++r)
       if (output_of_input[r] < 0) lost.push_back(static_cast<int>(r));
-    audit_regions(input, lost, report->contacts_lost, report->features);
+    report->features = audit_features(input, out, input_part, lost, report->contacts_lost, resolution);
   }
   return out;
 }

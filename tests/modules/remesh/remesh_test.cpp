@@ -106,9 +106,10 @@ TEST(FeatureAudit, SizesLostRegionsAndRegionContacts) {
   // 2V/A = 0.25) and the horizon between them a 1 × 1 square (width 2 × 1 / 4 = 0.5).
   const StructuralModel input = build_model(test::lattice_box(4, true));
   ASSERT_EQ(input.regions.size(), 2u);
-  FeatureAudit audit;
-  audit.resolution = 0.3;
-  audit_regions(input, {0}, {{0, 1}}, audit);
+  std::vector<int> same_parts(input.parts.size());
+  for (size_t p = 0; p < same_parts.size(); ++p) same_parts[p] = static_cast<int>(p);
+  const FeatureAudit audit = audit_features(input, input, same_parts, {0}, {{0, 1}}, 0.3);
+  EXPECT_TRUE(audit.lost.empty());  // the model compared with itself keeps every feature
   ASSERT_EQ(audit.regions_lost.size(), 1u);
   EXPECT_NEAR(audit.regions_lost[0].thickness, 0.25, 1e-9);
   ASSERT_EQ(audit.region_contacts_lost.size(), 1u);
