@@ -2,6 +2,7 @@
 // module test needs.
 #pragma once
 
+#include <cstdio>
 #include <string>
 
 #include "framework/host/context.h"
@@ -10,14 +11,16 @@
 namespace voroseal::test {
 
 struct ModuleHarness {
-  /// `register_module` is the module's registration function (voroseal_register_<name>).
-  ModuleHarness(void (*register_module)(ModuleRegistry&), const std::string& name)
-      : module((register_module(registry), registry.get(name))) {}
+  /// `register_module` is the module's registration function (voroseal_register_<name>); the
+  /// log goes to `log_file` at `log_level` (quiet by default).
+  ModuleHarness(void (*register_module)(ModuleRegistry&), const std::string& name,
+                LogLevel log_level = LogLevel::Quiet, std::FILE* log_file = stderr)
+      : log(log_level, log_file), module((register_module(registry), registry.get(name))) {}
   ModuleHarness(const ModuleHarness&) = delete;
   ModuleHarness& operator=(const ModuleHarness&) = delete;
 
   ModuleRegistry registry;  // declared first: `module` refers into it
-  Logger log{LogLevel::Quiet};
+  Logger log;
   Progress progress{false};
   Context context{log, progress};
   const Module& module;

@@ -70,15 +70,10 @@ TEST(RemeshModule, DumpsOptimisedSeedsInFileCoordinatesAndReports) {
 
 // Everything the module logs at warning level, for a model.
 std::string remesh_warnings(const StructuralModel& model) {
-  ModuleRegistry registry;
-  voroseal_register_remesh(registry);
-  const Module& module = registry.get("remesh");
   std::FILE* out = std::tmpfile();
-  Logger log(LogLevel::Warning, out);
-  Progress progress(false);
-  Context context(log, progress);
-  context.model = std::make_shared<StructuralModel>(model);
-  module.run(context, Parameters(module.parameters(), {{"seeds", 300}, {"iterations", 10}}));
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh", LogLevel::Warning, out);
+  harness.context.model = std::make_shared<StructuralModel>(model);
+  harness.module.run(harness.context, Parameters(harness.module.parameters(), {{"seeds", 300}, {"iterations", 10}}));
   std::rewind(out);
   std::string text;
   for (int c = std::fgetc(out); c != EOF; c = std::fgetc(out)) text += static_cast<char>(c);
