@@ -122,11 +122,12 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
   return labels;
 }
 
-const std::vector<std::string> kVolumeColumns = {"tets", "min_dihedral_deg"};
-// From the remesh step's topology report: whether the regions and their adjacency were kept,
-// and how many input features have no counterpart (all / larger than a Voronoi cell).
-const std::vector<std::string> kRemeshColumns = {"regions_preserved", "features_lost",
-                                                 "features_lost_larger_than_cell"};
+// The summary columns after the quality ones, taken from the steps' reports: tets and
+// min_dihedral_deg from tetmesh; from remesh's topology report, whether the regions and their
+// adjacency were kept and how many input features have no counterpart (all / larger than a
+// Voronoi cell).
+const std::vector<std::string> kStepColumns = {"tets", "min_dihedral_deg", "regions_preserved", "features_lost",
+                                               "features_lost_larger_than_cell"};
 
 // An inline SVG bar chart of a histogram.
 std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,
@@ -195,8 +196,7 @@ RunMeasures measure_run(const Context& context) {
   RunMeasures measures;
   json& row = measures.row;
   for (const std::string& key : summary_measure_keys()) row[key] = nullptr;
-  for (const std::string& key : kVolumeColumns) row[key] = nullptr;
-  for (const std::string& key : kRemeshColumns) row[key] = nullptr;
+  for (const std::string& key : kStepColumns) row[key] = nullptr;
   if (!context.model) return measures;
   const StructuralModel& model = *context.model;
 
@@ -294,8 +294,7 @@ std::vector<std::string> summary_columns(const StudyOutcome& outcome) {
   for (const std::string& label : swept_labels(outcome)) columns.push_back(label);
   columns.push_back("status");
   for (const std::string& key : summary_measure_keys()) columns.push_back(key);
-  for (const std::string& key : kVolumeColumns) columns.push_back(key);
-  for (const std::string& key : kRemeshColumns) columns.push_back(key);
+  for (const std::string& key : kStepColumns) columns.push_back(key);
   columns.push_back("time_read_s");
   for (const std::string& c : step_time_columns(outcome.study)) columns.push_back(c);
   columns.insert(columns.end(), {"time_write_s", "time_picture_s", "time_total_s", "error"});
@@ -315,9 +314,7 @@ json summary_rows(const StudyOutcome& outcome) {
     row["status"] = r.status;
     for (const std::string& key : summary_measure_keys())
       row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
-    for (const std::string& key : kVolumeColumns)
-      row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
-    for (const std::string& key : kRemeshColumns)
+    for (const std::string& key : kStepColumns)
       row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
     row["time_read_s"] = r.read_seconds;
     for (size_t s = 0; s < times.size(); ++s)
