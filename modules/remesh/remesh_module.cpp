@@ -213,13 +213,7 @@ class RemeshModule final : public Module {
  private:
   static nlohmann::json features_json(const std::vector<VertexFeature>& features) {
     nlohmann::json list = nlohmann::json::array();
-    for (const VertexFeature& f : features) {
-      const char* kind = f.kind == VertexFeature::Surface   ? "surface"
-                         : f.kind == VertexFeature::Contact ? "contact"
-                         : f.kind == VertexFeature::Corner  ? "corner"
-                                                            : "unknown";
-      list.push_back({{"kind", kind}, {"id", f.id}});
-    }
+    for (const VertexFeature& f : features) list.push_back({{"kind", feature_kind(f.kind)}, {"id", f.id}});
     return list;
   }
   static nlohmann::json topology_json(const TopologyReport& t, const StructuralModel& input) {
@@ -295,7 +289,10 @@ class RemeshModule final : public Module {
                   "clean-up's leak counts refer to them, the output's regions are inferred from its surfaces");
   }
   static const char* feature_kind(VertexFeature::Kind kind) {
-    return kind == VertexFeature::Surface ? "surface" : kind == VertexFeature::Contact ? "contact" : "corner";
+    return kind == VertexFeature::Surface   ? "surface"
+           : kind == VertexFeature::Contact ? "contact"
+           : kind == VertexFeature::Corner  ? "corner"
+                                            : "unknown";
   }
   // A part's name; a contact's parts; a corner's contacts.
   static std::string feature_name(const LostFeature& f, const StructuralModel& input) {
