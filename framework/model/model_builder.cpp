@@ -461,6 +461,7 @@ class ModelBuilder {
         }
         part.mesh.add_face(vh[0], vh[1], vh[2]);
       }
+      part.source_triangle.push_back(input_triangle_[f]);
     }
     // flatten() follows mesh face order: keep t_ in the same order for the later steps.
     std::vector<Triangle> triangles;

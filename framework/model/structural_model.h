@@ -45,6 +45,8 @@ struct SurfacePart {
   /// Model vertex id of each mesh vertex (mesh vertex i -> model_vertex[i]). A vertex that is
   /// non-manifold inside the part appears several times in the mesh with the same model id.
   std::vector<int> model_vertex;
+  /// Index in the soup it was built from of each mesh face (face f -> source_triangle[f]).
+  std::vector<int> source_triangle;
   std::vector<int> contacts;  // contacts on the border of or inside this part
 };
 

@@ -141,7 +141,8 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
     std::set_difference(touch_out.begin(), touch_out.end(), touch_in.begin(), touch_in.end(),
                         std::back_inserter(report->contacts_gained));
     report->regions_preserved = preserved && report->contacts_lost.empty() && report->contacts_gained.empty();
-    std::vector<int> input_part(out.parts.size());
+    std::vector<int>& input_part = report->input_part_of_output;
+    input_part.resize(out.parts.size());
     for (size_t p = 0; p < out.parts.size(); ++p) input_part[p] = part_of_group[out.parts[p].source_group];
     std::vector<int> lost;
     for (size_t r = 0; r < output_of_input.size(); ++r)
@@ -189,7 +190,21 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   if (options.clean_up) result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
   result.cleanup_seconds = seconds_since(t0);
 
-  result.model = model_from_remeshed(result.build.surface, input, &result.topology, 2.0 * h / std::sqrt(3.0));
+  const double resolution = 2.0 * h / std::sqrt(3.0);
+  result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);
+  // Pockets thinner than a cell are the resolution's doing: one side goes (a few rounds, as
+  // pockets next to each other open one by one).
+  std::vector<PocketRemoval> pockets;
+  for (int round = 0; options.clean_up && round < 3 && !result.topology.regions_gained.empty(); ++round) {
+    const std::vector<PocketRemoval> removed =
+        remove_pockets(result.build.surface, input, result.model, result.topology.input_part_of_output,
+                       result.topology.output_region_of_input, projector, resolution);
+    if (removed.empty()) break;
+    pockets.insert(pockets.end(), removed.begin(), removed.end());
+    result.topology = TopologyReport{};
+    result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);
+  }
+  result.topology.pockets_removed = std::move(pockets);
   result.topology.merges = result.build.merges;
   result.topology.merges.insert(result.topology.merges.end(), result.cleanup.merges.begin(), result.cleanup.merges.end());
   result.build.surface = RemeshedSurface{};

@@ -16,6 +16,7 @@
 #include "modules/remesh/feature_audit.h"
 #include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
+#include "modules/remesh/pocket_removal.h"
 #include "modules/remesh/seed_optimization.h"
 
 namespace voroseal {
@@ -54,6 +55,8 @@ struct TopologyReport {
   bool regions_preserved = false;   // same count and adjacency, matched by their sides
   std::vector<int> output_region_of_input;  // -1 when an input region was lost
   std::vector<GainedRegion> regions_gained;
+  std::vector<PocketRemoval> pockets_removed;  // pockets closed by the remesh and opened again
+  std::vector<int> input_part_of_output;      // input surface part of every output part
   /// Pairs of input regions (a < b, both kept) that touch in the input but not in the output,
   /// and the other way round.
   std::vector<std::pair<int, int>> contacts_lost, contacts_gained;

@@ -244,6 +244,17 @@ class RemeshModule final : public Module {
                         {"volume", g.volume},
                         {"location", {x.x(), x.y(), x.z()}}});
     }
+    nlohmann::json pockets = nlohmann::json::array();
+    for (const PocketRemoval& r : t.pockets_removed) {
+      const Vec3 x = r.location + input.frame.origin;
+      pockets.push_back({{"joined", r.region},
+                         {"part_removed", r.part},
+                         {"parts_relabeled", r.relabeled},
+                         {"triangles", r.triangles},
+                         {"volume", r.volume},
+                         {"thickness", r.thickness},
+                         {"location", {x.x(), x.y(), x.z()}}});
+    }
     nlohmann::json contacts_lost = nlohmann::json::array();
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       contacts_lost.push_back({{"regions", {c.a, c.b}},
@@ -266,6 +277,7 @@ class RemeshModule final : public Module {
             {"regions_preserved", t.regions_preserved},
             {"regions_lost", lost},
             {"regions_gained", gained},
+            {"pockets_removed", pockets},
             {"region_contacts_lost", contacts_lost},
             {"region_contacts_gained", t.contacts_gained},
             {"merges", merges},
@@ -332,6 +344,10 @@ class RemeshModule final : public Module {
                                      : std::string()) +
                   "; try a finer --edge-length");
     }
+    if (!t.pockets_removed.empty())
+      log.info("remesh: " + std::to_string(t.pockets_removed.size()) +
+               " pockets thinner than a cell, closed between surfaces that lie closer than the resolution, opened "
+               "again by removing one of their sides (JSON: topology.pockets_removed)");
     auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       log.warning("remesh: regions " + name(c.a) + " and " + name(c.b) +

@@ -1,0 +1,155 @@
+#include "modules/remesh/pocket_removal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+
+namespace voroseal {
+
+namespace {
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+}  // namespace
+
+std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
+                                          const StructuralModel& output, const std::vector<int>& input_part_of_output,
+                                          const std::vector<int>& output_region_of_input,
+                                          const SurfaceProjector& projector, double resolution) {
+  std::vector<PocketRemoval> removed;
+  std::vector<int> input_of_output(output.regions.size(), -1);
+  for (size_t r = 0; r < output_region_of_input.size(); ++r)
+    if (output_region_of_input[r] >= 0) input_of_output[output_region_of_input[r]] = static_cast<int>(r);
+  bool any_pocket = false;
+  for (int r : input_of_output) any_pocket = any_pocket || r < 0;
+  if (!any_pocket) return removed;
+
+  const auto output_sides = output.part_regions();
+  const auto input_sides = input.part_regions();
+  // Triangles of the surface on every edge, and the area of every output part.
+  std::unordered_map<std::uint64_t, int> edge_count;
+  for (const Triangle& f : surface.triangles)
+    for (int i = 0; i < 3; ++i) ++edge_count[edge_key(f[i], f[(i + 1) % 3])];
+  std::vector<double> part_area(output.parts.size(), 0.0);
+  for (size_t p = 0; p < output.parts.size(); ++p)
+    for (int t : output.parts[p].source_triangle) {
+      const Triangle& f = surface.triangles[t];
+      const Vec3 &a = surface.vertices[f[0]], &b = surface.vertices[f[1]], &c = surface.vertices[f[2]];
+      part_area[p] += 0.5 * (b - a).cross(c - a).norm();
+    }
+
+  std::vector<char> dead(surface.triangles.size(), 0);
+  std::vector<char> part_removed(output.parts.size(), 0);
+  // Whether removing part x leaves every edge it shares with the rest with two triangles or more.
+  auto leaves_no_border = [&](int x) {
+    std::unordered_map<std::uint64_t, int> own;
+    for (int t : output.parts[x].source_triangle) {
+      const Triangle& f = surface.triangles[t];
+      for (int i = 0; i < 3; ++i) ++own[edge_key(f[i], f[(i + 1) % 3])];
+    }
+    for (const auto& [key, n] : own) {
+      const int rest = edge_count[key] - n;
+      if (rest == 1) return false;
+    }
+    return true;
+  };
+
+  // Whether every vertex of output part y lies within half a cell of input part p.
+  auto within = [&](const SurfacePart& y, int p) {
+    for (int t : y.source_triangle)
+      for (int v : surface.triangles[t])
+        if (projector.distance_to_part(p, surface.vertices[v]) > 0.5 * resolution) return false;
+    return true;
+  };
+
+  for (size_t r = 0; r < output.regions.size(); ++r) {
+    if (input_of_output[r] >= 0) continue;
+    const std::vector<Side>& sides = output.regions[r].sides;
+    double area = 0.0;
+    bool touched = false;
+    for (const Side& s : sides) {
+      area += part_area[s.part];
+      touched = touched || part_removed[s.part];
+    }
+    if (touched || area <= 0.0) continue;  // a neighbouring pocket changed it: next round
+    const double volume = std::abs(output.signed_volume(sides));
+    const double thickness = 2.0 * volume / area;
+    if (thickness > resolution) continue;
+    for (const Side& x : sides) {
+      // The region on the other side of x; the pocket joins it.
+      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      if (q < 0 || q == static_cast<int>(r) || input_of_output[q] < 0) continue;
+      const int q_input = input_of_output[q];
+      // Every other side must then face q's input region: as it is labelled, or as another part
+      // of its input surface is (what the side becomes).
+      std::vector<std::pair<int, int>> relabel;  // (output part, input part)
+      bool consistent = true;
+      for (const Side& y : sides) {
+        if (y.part == x.part) continue;
+        const int p = input_part_of_output[y.part];
+        if ((y.positive ? input_sides[p].first : input_sides[p].second) == q_input) continue;
+        const int outer = y.positive ? output_sides[y.part].second : output_sides[y.part].first;
+        const int outer_input = outer >= 0 ? input_of_output[outer] : -1;
+        int other = -1;
+        if (outer < 0 || outer_input >= 0) {
+          const std::pair<int, int> wanted =
+              y.positive ? std::make_pair(q_input, outer_input) : std::make_pair(outer_input, q_input);
+          for (size_t candidate = 0; candidate < input.parts.size() && other < 0; ++candidate)
+            if (input_sides[candidate] == wanted && within(output.parts[y.part], static_cast<int>(candidate)))
+              other = static_cast<int>(candidate);
+        }
+        if (other < 0) {
+          consistent = false;
+          break;
+        }
+        relabel.push_back({y.part, other});
+      }
+      if (!consistent || !leaves_no_border(x.part)) continue;
+      PocketRemoval removal;
+      removal.region = input.regions[q_input].name;
+      removal.part = output.parts[x.part].name;
+      removal.volume = volume;
+      removal.thickness = thickness;
+      BoundingBox box;
+      for (int t : output.parts[x.part].source_triangle) {
+        dead[t] = 1;
+        const Triangle& f = surface.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+          --edge_count[edge_key(f[i], f[(i + 1) % 3])];
+          box.extend(surface.vertices[f[i]]);
+        }
+        ++removal.triangles;
+      }
+      for (const auto& [y, p] : relabel) {
+        for (int t : output.parts[y].source_triangle) surface.triangle_part[t] = p;
+        for (int t : output.parts[y].source_triangle)
+          for (int v : surface.triangles[t])
+            if (surface.features[v].kind == VertexFeature::Surface) surface.features[v].id = p;
+        removal.relabeled.push_back(output.parts[y].name + " -> " + input.parts[p].name);
+        part_removed[y] = 1;
+      }
+      removal.location = box.center();
+      part_removed[x.part] = 1;
+      removed.push_back(removal);
+      break;
+    }
+  }
+  if (removed.empty()) return removed;
+  size_t kept = 0;
+  for (size_t t = 0; t < surface.triangles.size(); ++t) {
+    if (dead[t]) continue;
+    surface.triangles[kept] = surface.triangles[t];
+    surface.triangle_part[kept] = surface.triangle_part[t];
+    ++kept;
+  }
+  surface.triangles.resize(kept);
+  surface.triangle_part.resize(kept);
+  surface.remove_unused_vertices();
+  return removed;
+}
+
+}  // namespace voroseal

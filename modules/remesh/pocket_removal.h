@@ -1,0 +1,42 @@
+// Pockets: output regions that are no input region of their own. Where two surfaces come closer
+// than the resolution (a layer pinching out, a fault whose throw fades, a horizon meeting a fault
+// at a low angle), the remeshed surfaces can touch along a loop away from their input contact and
+// close a thin volume between them. The paper's d_min merge (Fig. 11c-d) merges such surfaces
+// where their contacts come close; a pocket is what is left where they come close without a
+// contact nearby. A pocket goes by removing one of its sides: the two surfaces then are one
+// there, as they are in the input beyond the contact (the pinch-out, the fault tip).
+#pragma once
+
+#include "framework/model/structural_model.h"
+#include "modules/remesh/remeshed_surface.h"
+#include "modules/remesh/surface_projection.h"
+
+namespace voroseal {
+
+/// A side removed from a pocket.
+struct PocketRemoval {
+  std::string region;      // the input region the pocket was found in (empty: none)
+  std::string part;        // the output surface part removed
+  double volume = 0.0;     // of the pocket
+  double thickness = 0.0;  // 2V/A
+  int triangles = 0;       // removed
+  std::vector<std::string> relabeled;  // "output part -> input part" for the sides relabelled
+  Vec3 location = Vec3::Zero();  // middle of the removed part, local frame of `surface`
+};
+
+/// Removes from `surface` one side of every pocket of `output` (the model built from `surface`,
+/// its regions matched to the input's by `output_region_of_input`) thinner than `resolution`
+/// (2V/A). The side removed is a surface part between the pocket and a region Q such that every
+/// other side of the pocket comes from an input part that faces Q's input region on that side
+/// (so the model stays one the input's labels describe), or lies within `resolution` / 2 of an input
+/// part that faces Q's region and the same region beyond (it becomes that part: the wedge
+/// between a horizon and a fault pinched off at its tip joins the region beyond the horizon, and
+/// the fault piece around it becomes the fault part there); and it leaves no edge with a single
+/// triangle. Pockets with no such side are left (and reported as gained regions).
+/// `input_part_of_output` gives the input part of each output part.
+std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
+                                          const StructuralModel& output, const std::vector<int>& input_part_of_output,
+                                          const std::vector<int>& output_region_of_input,
+                                          const SurfaceProjector& projector, double resolution);
+
+}  // namespace voroseal
