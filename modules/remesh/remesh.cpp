@@ -193,16 +193,30 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   const double resolution = 2.0 * h / std::sqrt(3.0);
   result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);
   // Pockets thinner than a cell are the resolution's doing: one side goes (a few rounds, as
-  // pockets next to each other open one by one).
+  // pockets next to each other open one by one). A round is kept only when the regions got
+  // closer to the input's: fewer pockets, and no region or region contact lost or gained.
   std::vector<PocketRemoval> pockets;
+  auto departures = [](const TopologyReport& t) {
+    return std::count(t.output_region_of_input.begin(), t.output_region_of_input.end(), -1) +
+           static_cast<long>(t.contacts_lost.size() + t.contacts_gained.size());
+  };
   for (int round = 0; options.clean_up && round < 3 && !result.topology.regions_gained.empty(); ++round) {
+    RemeshedSurface before = result.build.surface;
     const std::vector<PocketRemoval> removed =
         remove_pockets(result.build.surface, input, result.model, result.topology.input_part_of_output,
                        result.topology.output_region_of_input, projector, resolution);
     if (removed.empty()) break;
+    TopologyReport topology;
+    StructuralModel model = model_from_remeshed(result.build.surface, input, &topology, resolution);
+    if (topology.regions_gained.size() >= result.topology.regions_gained.size() ||
+        departures(topology) > departures(result.topology)) {
+      log.debug("remesh: opening " + std::to_string(removed.size()) + " pockets changed other regions; undone");
+      result.build.surface = std::move(before);
+      break;
+    }
     pockets.insert(pockets.end(), removed.begin(), removed.end());
-    result.topology = TopologyReport{};
-    result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);
+    result.topology = std::move(topology);
+    result.model = std::move(model);
   }
   result.topology.pockets_removed = std::move(pockets);
   result.topology.merges = result.build.merges;
