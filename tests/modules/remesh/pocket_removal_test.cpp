@@ -33,32 +33,36 @@ struct BoxRemesh {
     surface.triangles.push_back(f);
     surface.triangle_part.push_back(horizon);
   }
-  // Remeshes the surface into a model, removes its pockets thinner than `max_thickness`, and
+  // A small closed tetrahedron of horizon triangles floating in the upper region (volume
+  // 0.005 × 0.1 / 3).
+  void add_floating_tetrahedron() {
+    int v[4];
+    int k = 0;
+    for (const Vec3& x : {Vec3(0.45, 0.45, 0.7), Vec3(0.55, 0.45, 0.7), Vec3(0.5, 0.55, 0.7), Vec3(0.5, 0.5, 0.8)})
+      v[k++] = add_vertex(x - input.frame.origin);
+    for (const Triangle& f : {Triangle{v[0], v[2], v[1]}, Triangle{v[0], v[1], v[3]}, Triangle{v[1], v[2], v[3]},
+                              Triangle{v[2], v[0], v[3]}})
+      add_triangle(f);
+  }
+  // Remeshes the surface into a model, removes its pockets thinner than `resolution`, and
   // remeshes again; returns the removals.
-  std::vector<PocketRemoval> remove(double max_thickness, StructuralModel& after, TopologyReport& report) {
+  std::vector<PocketRemoval> remove(double resolution, StructuralModel& after, TopologyReport& report) {
     TopologyReport first;
     const StructuralModel before = model_from_remeshed(surface, input, &first, 1.0);
     EXPECT_EQ(first.regions_gained.size(), 1u);
     const SurfaceProjector projector(input);
     const std::vector<PocketRemoval> removed = remove_pockets(surface, input, before, first.input_part_of_output,
-                                                              first.output_region_of_input, projector, max_thickness);
+                                                              first.output_region_of_input, projector, resolution);
     after = model_from_remeshed(surface, input, &report, 1.0);
     return removed;
   }
 };
 
 TEST(RemovePockets, ASurfaceClosedOnItselfGoesAway) {
-  // A small closed tetrahedron of horizon triangles floating in the upper region.
   BoxRemesh box;
   ASSERT_GE(box.horizon, 0);
   const size_t vertices = box.surface.vertices.size(), triangles = box.surface.triangles.size();
-  int v[4];
-  int k = 0;
-  for (const Vec3& x : {Vec3(0.45, 0.45, 0.7), Vec3(0.55, 0.45, 0.7), Vec3(0.5, 0.55, 0.7), Vec3(0.5, 0.5, 0.8)})
-    v[k++] = box.add_vertex(x - box.input.frame.origin);
-  for (const Triangle& f : {Triangle{v[0], v[2], v[1]}, Triangle{v[0], v[1], v[3]}, Triangle{v[1], v[2], v[3]},
-                            Triangle{v[2], v[0], v[3]}})
-    box.add_triangle(f);
+  box.add_floating_tetrahedron();
   StructuralModel after;
   TopologyReport report;
   const std::vector<PocketRemoval> removed = box.remove(1.0, after, report);
@@ -102,13 +106,7 @@ TEST(RemovePockets, ADoubledSurfaceKeepsOneSheet) {
 TEST(RemovePockets, KeepsPocketsThickerThanAsked) {
   BoxRemesh box;
   ASSERT_GE(box.horizon, 0);
-  int v[4];
-  int k = 0;
-  for (const Vec3& x : {Vec3(0.45, 0.45, 0.7), Vec3(0.55, 0.45, 0.7), Vec3(0.5, 0.55, 0.7), Vec3(0.5, 0.5, 0.8)})
-    v[k++] = box.add_vertex(x - box.input.frame.origin);
-  for (const Triangle& f : {Triangle{v[0], v[2], v[1]}, Triangle{v[0], v[1], v[3]}, Triangle{v[1], v[2], v[3]},
-                            Triangle{v[2], v[0], v[3]}})
-    box.add_triangle(f);
+  box.add_floating_tetrahedron();
   StructuralModel after;
   TopologyReport report;
   EXPECT_TRUE(box.remove(1e-3, after, report).empty());
