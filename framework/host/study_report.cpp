@@ -124,10 +124,12 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 
 // The summary columns after the quality ones, taken from the steps' reports: tets and
 // min_dihedral_deg from tetmesh; from remesh's topology report, whether the regions and their
-// adjacency were kept and how many input features have no counterpart (all / larger than a
-// Voronoi cell).
-const std::vector<std::string> kStepColumns = {"tets", "min_dihedral_deg", "regions_preserved", "features_lost",
-                                               "features_lost_larger_than_cell"};
+// adjacency were kept, how many input features have no counterpart (all / larger than a
+// Voronoi cell), how many pockets are left (output regions that are no input region) and how
+// many were opened again.
+const std::vector<std::string> kStepColumns = {
+    "tets", "min_dihedral_deg", "regions_preserved", "features_lost", "features_lost_larger_than_cell",
+    "pockets", "pockets_opened"};
 
 // An inline SVG bar chart of a histogram.
 std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,
@@ -244,6 +246,10 @@ RunMeasures measure_run(const Context& context) {
       row["features_lost"] = static_cast<long>(t["features_lost"].size());
     if (t.contains("features_lost_larger_than_resolution"))
       row["features_lost_larger_than_cell"] = t["features_lost_larger_than_resolution"];
+    if (t.contains("regions_gained") && t["regions_gained"].is_array())
+      row["pockets"] = static_cast<long>(t["regions_gained"].size());
+    if (t.contains("pockets_removed") && t["pockets_removed"].is_array())
+      row["pockets_opened"] = static_cast<long>(t["pockets_removed"].size());
   }
 
   const std::vector<TriangleQuality> all = triangle_qualities(model.vertices, flat.triangles);

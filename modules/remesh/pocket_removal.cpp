@@ -4,7 +4,6 @@
 #include <cmath>
 #include <unordered_map>
 
-
 namespace voroseal {
 
 namespace {
@@ -84,8 +83,9 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
       const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
       if (q < 0 || q == static_cast<int>(r) || input_of_output[q] < 0) continue;
       const int q_input = input_of_output[q];
-      // Every other side must then face q's input region: as it is labelled, or as another part
-      // of its input surface is (what the side becomes).
+      // Every other side must then face q's input region: as it is labelled, or as an input part
+      // within half a cell does that faces q's region and the same region beyond (the side
+      // becomes that part).
       std::vector<std::pair<int, int>> relabel;  // (output part, input part)
       bool consistent = true;
       for (const Side& y : sides) {

@@ -295,7 +295,8 @@ TEST(RunStudy, FailedRunsAreRecordedAndTheStudyGoesOn) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
   EXPECT_EQ(csv.rfind("run,model,key,fail,status,vertices,triangles,surfaces,contacts,corners,regions,min_angle_deg,"
                       "pct_triangles_angle_below_30,avg_quality,min_quality,area,bbox_diagonal,hausdorff_pct,tets,"
-                      "min_dihedral_deg,regions_preserved,features_lost,features_lost_larger_than_cell,time_read_s,"
+                      "min_dihedral_deg,regions_preserved,features_lost,features_lost_larger_than_cell,pockets,"
+                      "pockets_opened,time_read_s,"
                       "time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
                       "time_total_s,error\n",
                       0),
@@ -385,11 +386,15 @@ TEST(RunStudy, TheStatsModulesNumbersFillTheRow) {
   context.report["remesh"] = {{"topology",
                                {{"regions_preserved", false},
                                 {"features_lost", json::array({json::object(), json::object()})},
-                                {"features_lost_larger_than_resolution", 1}}}};
+                                {"features_lost_larger_than_resolution", 1},
+                                {"regions_gained", json::array({json::object()})},
+                                {"pockets_removed", json::array({json::object(), json::object(), json::object()})}}}};
   measured = measure_run(context);
   EXPECT_EQ(measured.row.at("regions_preserved"), false);
   EXPECT_EQ(measured.row.at("features_lost"), 2);
   EXPECT_EQ(measured.row.at("features_lost_larger_than_cell"), 1);
+  EXPECT_EQ(measured.row.at("pockets"), 1);
+  EXPECT_EQ(measured.row.at("pockets_opened"), 3);
 }
 
 TEST(RunStudy, BuiltInCheckAndStatsSteps) {
