@@ -22,16 +22,18 @@
 namespace voroseal {
 
 /// Defaults of the command line, relative to the mean edge length h of the remesh: features
-/// closer than 0.2 h are merged (thinner strips only give slivers), and the remesh is refined
-/// where it strays farther than 0.1 h from the input.
-constexpr double kDefaultMinFeatureFactor = 0.2;
+/// closer than 0.15 h are merged (thinner strips only give slivers; a merge moves the surfaces
+/// by up to d_min, which bounds the Hausdorff distance it causes: 0.2 h gave 0.56 % of the
+/// diagonal on CloudSpin_fixed at 5000 seeds, 0.15 h 0.46 %), and the remesh is refined where
+/// it strays farther than 0.1 h from the input.
+constexpr double kDefaultMinFeatureFactor = 0.15;
 constexpr double kDefaultFidelityFactor = 0.1;
 
 struct RemeshOptions {
   SeedOptions seeds;
   MeshBuildOptions build;
   /// A negative cleanup.min_feature or cleanup.fidelity_tolerance is a factor of the mean edge
-  /// length of the remesh: -0.2 means 0.2 h.
+  /// length of the remesh: -0.15 means 0.15 h.
   CleanupOptions cleanup;
   bool clean_up = true;
 };

@@ -88,7 +88,7 @@ class RemeshModule final : public Module {
     p.push_back(output);
     p.push_back(spec("min-feature", ParameterType::Double, nullptr,
                      "merge features closer than this distance, d_min of paper Fig. 11c-d "
-                     "(default: 0.2 x the mean edge length; 0: never merge)",
+                     "(default: 0.15 x the mean edge length; 0: never merge)",
                      0.0));
     p.push_back(spec("fidelity", ParameterType::Double, nullptr,
                      "split where the remesh strays farther than this from the input "
