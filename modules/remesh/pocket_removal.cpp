@@ -43,18 +43,41 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
 
   std::vector<char> dead(surface.triangles.size(), 0);
   std::vector<char> part_removed(output.parts.size(), 0);
-  // Whether removing part x leaves every edge it shares with the rest with two triangles or more.
-  auto leaves_no_border = [&](int x) {
+  // Whether removing `parts` leaves every edge they share with the rest with two triangles or
+  // more.
+  auto leaves_no_border = [&](const std::vector<int>& parts) {
     std::unordered_map<std::uint64_t, int> own;
-    for (int t : output.parts[x].source_triangle) {
-      const Triangle& f = surface.triangles[t];
-      for (int i = 0; i < 3; ++i) ++own[edge_key(f[i], f[(i + 1) % 3])];
-    }
-    for (const auto& [key, n] : own) {
-      const int rest = edge_count[key] - n;
-      if (rest == 1) return false;
-    }
+    for (int x : parts)
+      for (int t : output.parts[x].source_triangle) {
+        const Triangle& f = surface.triangles[t];
+        for (int i = 0; i < 3; ++i) ++own[edge_key(f[i], f[(i + 1) % 3])];
+      }
+    for (const auto& [key, n] : own)
+      if (edge_count[key] - n == 1) return false;
     return true;
+  };
+  // Removes `parts` (their triangles die) and records the removal.
+  auto remove = [&](const std::vector<int>& parts, const std::string& joined, double volume, double thickness) {
+    PocketRemoval removal;
+    removal.region = joined;
+    removal.volume = volume;
+    removal.thickness = thickness;
+    BoundingBox box;
+    for (int x : parts) {
+      removal.part += (removal.part.empty() ? "" : ", ") + output.parts[x].name;
+      part_removed[x] = 1;
+      for (int t : output.parts[x].source_triangle) {
+        dead[t] = 1;
+        const Triangle& f = surface.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+          --edge_count[edge_key(f[i], f[(i + 1) % 3])];
+          box.extend(surface.vertices[f[i]]);
+        }
+        ++removal.triangles;
+      }
+    }
+    removal.location = box.center();
+    removed.push_back(removal);
   };
 
   // Whether every vertex of output part y lies within half a cell of input part p.
@@ -78,6 +101,30 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     const double volume = std::abs(output.signed_volume(sides));
     const double thickness = 2.0 * volume / area;
     if (thickness > resolution) continue;
+    // A bubble inside one region (every side has it beyond): all its sides go.
+    std::vector<int> all;
+    int beyond_all = -2;
+    for (const Side& x : sides) {
+      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      beyond_all = beyond_all == -2 || beyond_all == q ? q : -3;
+      all.push_back(x.part);
+    }
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    if (beyond_all >= 0 && input_of_output[beyond_all] >= 0 && leaves_no_border(all)) {
+      remove(all, input.regions[input_of_output[beyond_all]].name, volume, thickness);
+      continue;
+    }
+    // A side between two pockets goes: they are one pocket, which the next round opens.
+    bool merged = false;
+    for (const Side& x : sides) {
+      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      if (q < 0 || q == static_cast<int>(r) || input_of_output[q] >= 0 || !leaves_no_border({x.part})) continue;
+      remove({x.part}, std::string(), volume, thickness);
+      merged = true;
+      break;
+    }
+    if (merged) continue;
     for (const Side& x : sides) {
       // The region on the other side of x; the pocket joins it.
       const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
@@ -108,33 +155,16 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
         }
         relabel.push_back({y.part, other});
       }
-      if (!consistent || !leaves_no_border(x.part)) continue;
-      PocketRemoval removal;
-      removal.region = input.regions[q_input].name;
-      removal.part = output.parts[x.part].name;
-      removal.volume = volume;
-      removal.thickness = thickness;
-      BoundingBox box;
-      for (int t : output.parts[x.part].source_triangle) {
-        dead[t] = 1;
-        const Triangle& f = surface.triangles[t];
-        for (int i = 0; i < 3; ++i) {
-          --edge_count[edge_key(f[i], f[(i + 1) % 3])];
-          box.extend(surface.vertices[f[i]]);
-        }
-        ++removal.triangles;
-      }
+      if (!consistent || !leaves_no_border({x.part})) continue;
+      remove({x.part}, input.regions[q_input].name, volume, thickness);
       for (const auto& [y, p] : relabel) {
         for (int t : output.parts[y].source_triangle) surface.triangle_part[t] = p;
         for (int t : output.parts[y].source_triangle)
           for (int v : surface.triangles[t])
             if (surface.features[v].kind == VertexFeature::Surface) surface.features[v].id = p;
-        removal.relabeled.push_back(output.parts[y].name + " -> " + input.parts[p].name);
+        removed.back().relabeled.push_back(output.parts[y].name + " -> " + input.parts[p].name);
         part_removed[y] = 1;
       }
-      removal.location = box.center();
-      part_removed[x.part] = 1;
-      removed.push_back(removal);
       break;
     }
   }

@@ -3,8 +3,8 @@
 // at a low angle), the remeshed surfaces can touch along a loop away from their input contact and
 // close a thin volume between them. The paper's d_min merge (Fig. 11c-d) merges such surfaces
 // where their contacts come close; a pocket is what is left where they come close without a
-// contact nearby. A pocket goes by removing one of its sides: the two surfaces then are one
-// there, as they are in the input beyond the contact (the pinch-out, the fault tip).
+// contact nearby. A pocket goes by removing sides: the two surfaces then are one there, as they
+// are in the input beyond the contact (the pinch-out, the fault tip).
 #pragma once
 
 #include "framework/model/structural_model.h"
@@ -13,27 +13,31 @@
 
 namespace voroseal {
 
-/// A side removed from a pocket.
+/// Sides removed from a pocket.
 struct PocketRemoval {
-  std::string region;      // the input region the pocket was found in (empty: none)
-  std::string part;        // the output surface part removed
+  std::string region;      // the input region the pocket joined (empty: another pocket)
+  std::string part;        // the output surface parts removed, comma-separated
   double volume = 0.0;     // of the pocket
   double thickness = 0.0;  // 2V/A
   int triangles = 0;       // removed
   std::vector<std::string> relabeled;  // "output part -> input part" for the sides relabelled
-  Vec3 location = Vec3::Zero();  // middle of the removed part, local frame of `surface`
+  Vec3 location = Vec3::Zero();  // middle of the removed parts, local frame of `surface`
 };
 
-/// Removes from `surface` one side of every pocket of `output` (the model built from `surface`,
-/// its regions matched to the input's by `output_region_of_input`) thinner than `resolution`
-/// (2V/A). The side removed is a surface part between the pocket and a region Q such that every
-/// other side of the pocket comes from an input part that faces Q's input region on that side
-/// (so the model stays one the input's labels describe), or lies within `resolution` / 2 of an input
-/// part that faces Q's region and the same region beyond (it becomes that part: the wedge
-/// between a horizon and a fault pinched off at its tip joins the region beyond the horizon, and
-/// the fault piece around it becomes the fault part there); and it leaves no edge with a single
-/// triangle. Pockets with no such side are left (and reported as gained regions).
-/// `input_part_of_output` gives the input part of each output part.
+/// Opens the pockets of `output` (the model built from `surface`, its regions matched to the
+/// input's by `output_region_of_input`) thinner than `resolution` (2V/A) by removing sides from
+/// `surface`, the first that applies of:
+///  - a bubble inside one region Q (Q beyond every side): every side goes;
+///  - a side between the pocket and another pocket goes (one pocket, opened next round);
+///  - one side between the pocket and a region Q goes, when every other side comes from an input
+///    part facing Q's input region on that side (the model stays one the input's labels
+///    describe), or lies within `resolution` / 2 of an input part that faces Q's region and the
+///    same region beyond (it becomes that part: the wedge between a horizon and a fault pinched
+///    off at its tip joins the region beyond the horizon, and the fault piece around it becomes
+///    the fault part there).
+/// Nothing is removed that would leave an edge with a single triangle. Pockets with no such side
+/// are left (and reported as gained regions). `input_part_of_output` gives the input part of
+/// each output part.
 std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
                                           const StructuralModel& output, const std::vector<int>& input_part_of_output,
                                           const std::vector<int>& output_region_of_input,

@@ -248,7 +248,7 @@ class RemeshModule final : public Module {
     for (const PocketRemoval& r : t.pockets_removed) {
       const Vec3 x = r.location + input.frame.origin;
       pockets.push_back({{"joined", r.region},
-                         {"part_removed", r.part},
+                         {"parts_removed", r.part},
                          {"parts_relabeled", r.relabeled},
                          {"triangles", r.triangles},
                          {"volume", r.volume},
@@ -347,7 +347,7 @@ class RemeshModule final : public Module {
     if (!t.pockets_removed.empty())
       log.info("remesh: " + std::to_string(t.pockets_removed.size()) +
                " pockets thinner than a cell, closed between surfaces that lie closer than the resolution, opened "
-               "again by removing one of their sides (JSON: topology.pockets_removed)");
+               "again by removing sides (JSON: topology.pockets_removed)");
     auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       log.warning("remesh: regions " + name(c.a) + " and " + name(c.b) +

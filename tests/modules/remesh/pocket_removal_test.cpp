@@ -49,12 +49,16 @@ struct BoxRemesh {
   std::vector<PocketRemoval> remove(double resolution, StructuralModel& after, TopologyReport& report) {
     TopologyReport first;
     const StructuralModel before = model_from_remeshed(surface, input, &first, 1.0);
-    EXPECT_EQ(first.regions_gained.size(), 1u);
     const SurfaceProjector projector(input);
     const std::vector<PocketRemoval> removed = remove_pockets(surface, input, before, first.input_part_of_output,
                                                               first.output_region_of_input, projector, resolution);
     after = model_from_remeshed(surface, input, &report, 1.0);
     return removed;
+  }
+  int part_named(const std::string& prefix) const {
+    for (size_t p = 0; p < input.parts.size(); ++p)
+      if (input.parts[p].name.rfind(prefix, 0) == 0) return static_cast<int>(p);
+    return -1;
   }
 };
 
@@ -112,6 +116,62 @@ TEST(RemovePockets, KeepsPocketsThickerThanAsked) {
   EXPECT_TRUE(box.remove(1e-3, after, report).empty());
   EXPECT_EQ(after.regions.size(), 3u);
   EXPECT_EQ(report.regions_gained.size(), 1u);
+}
+
+TEST(RemovePockets, ABubbleOfTwoSurfacesGoesAway) {
+  // The floating tetrahedron with two faces of the horizon and two of the top: two output parts
+  // (their common edges are contacts), both with the upper region beyond. Neither can go alone
+  // (the other would be left with border edges): both go.
+  BoxRemesh box;
+  ASSERT_GE(box.horizon, 0);
+  const int top = box.part_named("zmax");
+  ASSERT_GE(top, 0);
+  const size_t triangles = box.surface.triangles.size();
+  box.add_floating_tetrahedron();
+  box.surface.triangle_part[triangles + 2] = top;
+  box.surface.triangle_part[triangles + 3] = top;
+  StructuralModel after;
+  TopologyReport report;
+  const std::vector<PocketRemoval> removed = box.remove(1.0, after, report);
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_EQ(removed[0].triangles, 4);
+  EXPECT_EQ(box.surface.triangles.size(), triangles);
+  EXPECT_EQ(after.regions.size(), 2u);
+  EXPECT_TRUE(report.regions_preserved);
+}
+
+TEST(RemovePockets, TwoPocketsSideBySideBecomeOneThenGo) {
+  // Two tetrahedra of horizon triangles sharing a face, floating in the upper region: two
+  // pockets. The shared face goes first (one pocket), then the bubble.
+  BoxRemesh box;
+  ASSERT_GE(box.horizon, 0);
+  const size_t triangles = box.surface.triangles.size(), vertices = box.surface.vertices.size();
+  const Vec3 o = box.input.frame.origin;
+  const int a = box.add_vertex(Vec3(0.45, 0.45, 0.7) - o), b = box.add_vertex(Vec3(0.55, 0.45, 0.7) - o),
+            c = box.add_vertex(Vec3(0.5, 0.55, 0.7) - o), up = box.add_vertex(Vec3(0.5, 0.5, 0.8) - o),
+            down = box.add_vertex(Vec3(0.5, 0.5, 0.62) - o);
+  for (const Triangle& f : {Triangle{a, b, up}, Triangle{b, c, up}, Triangle{c, a, up}, Triangle{a, b, c},
+                            Triangle{a, c, down}, Triangle{c, b, down}, Triangle{b, a, down}})
+    box.add_triangle(f);
+  const SurfaceProjector projector(box.input);
+  std::vector<PocketRemoval> removed;
+  for (int round = 0; round < 2; ++round) {
+    TopologyReport t;
+    const StructuralModel m = model_from_remeshed(box.surface, box.input, &t, 1.0);
+    EXPECT_EQ(t.regions_gained.size(), round == 0 ? 2u : 1u) << "round " << round;
+    const std::vector<PocketRemoval> r =
+        remove_pockets(box.surface, box.input, m, t.input_part_of_output, t.output_region_of_input, projector, 1.0);
+    removed.insert(removed.end(), r.begin(), r.end());
+  }
+  ASSERT_EQ(removed.size(), 2u);
+  EXPECT_TRUE(removed[0].region.empty());  // the face between the two pockets
+  EXPECT_EQ(removed[0].triangles, 1);
+  EXPECT_EQ(removed[1].triangles, 6);
+  EXPECT_EQ(box.surface.triangles.size(), triangles);
+  EXPECT_EQ(box.surface.vertices.size(), vertices);
+  TopologyReport report;
+  EXPECT_EQ(model_from_remeshed(box.surface, box.input, &report, 1.0).regions.size(), 2u);
+  EXPECT_TRUE(report.regions_preserved);
 }
 
 }  // namespace
