@@ -57,7 +57,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     return true;
   };
   // Removes `parts` (their triangles die) and records the removal.
-  auto remove = [&](const std::vector<int>& parts, const std::string& joined, double volume, double thickness) {
+  auto remove_parts = [&](const std::vector<int>& parts, const std::string& joined, double volume, double thickness) {
     PocketRemoval removal;
     removal.region = joined;
     removal.volume = volume;
@@ -112,7 +112,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     if (beyond_all >= 0 && input_of_output[beyond_all] >= 0 && leaves_no_border(all)) {
-      remove(all, input.regions[input_of_output[beyond_all]].name, volume, thickness);
+      remove_parts(all, input.regions[input_of_output[beyond_all]].name, volume, thickness);
       continue;
     }
     // A side between two pockets goes: they are one pocket, which the next round opens.
@@ -120,7 +120,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     for (const Side& x : sides) {
       const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
       if (q < 0 || q == static_cast<int>(r) || input_of_output[q] >= 0 || !leaves_no_border({x.part})) continue;
-      remove({x.part}, std::string(), volume, thickness);
+      remove_parts({x.part}, std::string(), volume, thickness);
       merged = true;
       break;
     }
@@ -156,7 +156,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
         relabel.push_back({y.part, other});
       }
       if (!consistent || !leaves_no_border({x.part})) continue;
-      remove({x.part}, input.regions[q_input].name, volume, thickness);
+      remove_parts({x.part}, input.regions[q_input].name, volume, thickness);
       for (const auto& [y, p] : relabel) {
         for (int t : output.parts[y].source_triangle) surface.triangle_part[t] = p;
         for (int t : output.parts[y].source_triangle)
