@@ -64,7 +64,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     removal.thickness = thickness;
     BoundingBox box;
     for (int x : parts) {
-      removal.part += (removal.part.empty() ? "" : ", ") + output.parts[x].name;
+      removal.parts.push_back(output.parts[x].name);
       part_removed[x] = 1;
       for (int t : output.parts[x].source_triangle) {
         dead[t] = 1;

@@ -7,6 +7,9 @@
 // are in the input beyond the contact (the pinch-out, the fault tip).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "framework/model/structural_model.h"
 #include "modules/remesh/remeshed_surface.h"
 #include "modules/remesh/surface_projection.h"
@@ -16,7 +19,7 @@ namespace voroseal {
 /// Sides removed from a pocket.
 struct PocketRemoval {
   std::string region;      // the input region the pocket joined (empty: another pocket)
-  std::string part;        // the output surface parts removed, comma-separated
+  std::vector<std::string> parts;  // the output surface parts removed
   double volume = 0.0;     // of the pocket
   double thickness = 0.0;  // 2V/A
   int triangles = 0;       // removed

@@ -248,7 +248,7 @@ class RemeshModule final : public Module {
     for (const PocketRemoval& r : t.pockets_removed) {
       const Vec3 x = r.location + input.frame.origin;
       pockets.push_back({{"joined", r.region},
-                         {"parts_removed", r.part},
+                         {"parts_removed", r.parts},
                          {"parts_relabeled", r.relabeled},
                          {"triangles", r.triangles},
                          {"volume", r.volume},

@@ -135,6 +135,7 @@ TEST(RemovePockets, ABubbleOfTwoSurfacesGoesAway) {
   const std::vector<PocketRemoval> removed = box.remove(1.0, after, report);
   ASSERT_EQ(removed.size(), 1u);
   EXPECT_EQ(removed[0].triangles, 4);
+  EXPECT_EQ(removed[0].parts.size(), 2u);
   EXPECT_EQ(box.surface.triangles.size(), triangles);
   EXPECT_EQ(after.regions.size(), 2u);
   EXPECT_TRUE(report.regions_preserved);
