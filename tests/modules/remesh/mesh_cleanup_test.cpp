@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "framework/geometry/triangle_quality.h"
@@ -197,6 +198,46 @@ TEST(MeshCleanup, APleatIsAFold) {
   const CleanupReport report = clean_up(s, input, projector, options);
   // Repaired, or at least counted as a fold that is left.
   EXPECT_TRUE(pleats() == 0 || report.folds_left > 0) << "pleats " << pleats() << ", folds left " << report.folds_left;
+}
+
+TEST(MeshCleanup, OneTriangleOfACoincidentPairGoesWhenBothCannot) {
+  // A horizon triangle repeated as a triangle of the top face, on the same three vertices (a
+  // region pinched to nothing between two surfaces). Both cannot go (the horizon would open),
+  // so one does: the repeated one, and no intersecting pair is left.
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  int horizon = -1, top = -1;
+  for (size_t p = 0; p < input.parts.size(); ++p) {
+    if (input.parts[p].name == "horizon") horizon = static_cast<int>(p);
+    if (input.parts[p].name == "zmax") top = static_cast<int>(p);
+  }
+  ASSERT_GE(horizon, 0);
+  ASSERT_GE(top, 0);
+  const std::vector<Triangle> original = s.triangles;
+  // A horizon triangle away from the box sides (its vertices are surface vertices).
+  int t = -1;
+  for (size_t k = 0; k < s.triangles.size() && t < 0; ++k) {
+    bool inside = s.triangle_part[k] == horizon;
+    for (int v : s.triangles[k]) inside = inside && s.features[v].kind == VertexFeature::Surface;
+    if (inside) t = static_cast<int>(k);
+  }
+  ASSERT_GE(t, 0);
+  const Triangle f = s.triangles[t];
+  s.triangles.push_back({f[0], f[2], f[1]});
+  s.triangle_part.push_back(top);
+  CleanupOptions options;
+  options.smoothing_iterations = 0;
+  options.angle_passes = 0;
+  const CleanupReport report = clean_up(s, input, projector, options);
+  EXPECT_GE(report.intersections_found, 1);
+  EXPECT_EQ(report.intersections_left, 0);
+  EXPECT_EQ(report.coincident_removed, 1);
+  EXPECT_EQ(report.holes_left, 0);
+  ASSERT_EQ(s.triangles.size(), original.size());
+  const std::vector<int> input_part = flatten(input).part;
+  EXPECT_EQ(std::count(s.triangle_part.begin(), s.triangle_part.end(), top),
+            std::count(input_part.begin(), input_part.end(), top));
 }
 
 }  // namespace
