@@ -21,9 +21,9 @@ struct RunMeasures {
   /// summary_measure_keys() plus tets and min_dihedral_deg; null when unknown. Taken from
   /// context.report["stats"] when the stats step ran (its numbers are authoritative), otherwise
   /// measured on context.model here (hausdorff_pct then stays null); tets from
-  /// report["tetmesh"] or context.volume; regions_preserved, features_lost and
-  /// features_lost_larger_than_cell from report["remesh"]["topology"]. "measured_by" says
-  /// which: "stats" or "pipeline".
+  /// report["tetmesh"] or context.volume; regions_preserved, features_lost,
+  /// features_lost_larger_than_cell, pockets and pockets_opened from
+  /// report["remesh"]["topology"]. "measured_by" says which: "stats" or "pipeline".
   nlohmann::json row = nlohmann::json::object();
   /// {"quality": {"lo", "hi", "counts"}, "min_angle_deg": {...}} over the model's triangles.
   nlohmann::json histograms = nlohmann::json::object();

@@ -308,18 +308,7 @@ class Editor {
     return static_cast<int>(s_.vertices.size()) - 1;
   }
 
-  void finish() {
-    std::vector<Triangle> tris;
-    std::vector<int> part;
-    for (size_t t = 0; t < s_.triangles.size(); ++t)
-      if (!dead_[t]) {
-        tris.push_back(s_.triangles[t]);
-        part.push_back(s_.triangle_part[t]);
-      }
-    s_.triangles = std::move(tris);
-    s_.triangle_part = std::move(part);
-    s_.remove_unused_vertices();
-  }
+  void finish() { s_.remove_triangles(dead_); }
 
   bool corner_ends_contact(int corner, int contact) const {
     const auto& c = input_.contacts[contact].corners;
@@ -740,15 +729,13 @@ int raise_valence3_on_contacts(Editor& e) {
     const int v = static_cast<int>(vi);
     const std::vector<int>& ring = e.star(v);
     if (ring.size() < 4) continue;
+    // Inside one part the fan goes (remove_valence3); a surface vertex may also sit where
+    // another part ends (its free border), which the fan must keep.
     bool several_parts = false;
     for (int t : ring) several_parts = several_parts || e.s_.triangle_part[t] != e.s_.triangle_part[ring[0]];
     if (!several_parts) continue;
-    const std::vector<int> star = ring;
     std::map<int, std::vector<int>> by_part;
-    for (int t : star) by_part[e.s_.triangle_part[t]].push_back(t);
-    // Inside one part the fan goes (remove_valence3); a surface vertex may also sit where
-    // another part ends (its free border), which the fan must keep.
-    if (by_part.size() < 2) continue;
+    for (int t : ring) by_part[e.s_.triangle_part[t]].push_back(t);
     for (const auto& [part, fan] : by_part) {
       if (fan.size() != 3 || e.closed_fan_size(v, part) != 3) continue;
       // Best flip of a side (x, y) of the fan that is not on a contact: triangle (v, x, y) and the
@@ -1883,6 +1870,19 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   report.valence3_raised += raise_valence3_on_contacts(e);
   e.finish();
   return report;
+}
+
+void RemeshedSurface::remove_triangles(const std::vector<char>& dead) {
+  size_t kept = 0;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    if (t < dead.size() && dead[t]) continue;
+    triangles[kept] = triangles[t];
+    triangle_part[kept] = triangle_part[t];
+    ++kept;
+  }
+  triangles.resize(kept);
+  triangle_part.resize(kept);
+  remove_unused_vertices();
 }
 
 void RemeshedSurface::remove_unused_vertices() {

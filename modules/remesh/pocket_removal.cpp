@@ -29,6 +29,13 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
 
   const auto output_sides = output.part_regions();
   const auto input_sides = input.part_regions();
+  // The output region beyond a side (the other side of its part), and the input region that the
+  // side's input part has on the side itself.
+  auto beyond = [&](const Side& s) { return s.positive ? output_sides[s.part].second : output_sides[s.part].first; };
+  auto labelled = [&](const Side& s) {
+    const auto& in = input_sides[input_part_of_output[s.part]];
+    return s.positive ? in.first : in.second;
+  };
   // Triangles of the surface on every edge, and the area of every output part.
   std::unordered_map<std::uint64_t, int> edge_count;
   for (const Triangle& f : surface.triangles)
@@ -105,7 +112,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     std::vector<int> all;
     int beyond_all = -2;
     for (const Side& x : sides) {
-      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      const int q = beyond(x);
       beyond_all = beyond_all == -2 || beyond_all == q ? q : -3;
       all.push_back(x.part);
     }
@@ -118,7 +125,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     // A side between two pockets goes: they are one pocket, which the next round opens.
     bool merged = false;
     for (const Side& x : sides) {
-      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      const int q = beyond(x);
       if (q < 0 || q == static_cast<int>(r) || input_of_output[q] >= 0 || !leaves_no_border({x.part})) continue;
       remove_parts({x.part}, std::string(), volume, thickness);
       merged = true;
@@ -126,20 +133,18 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     }
     if (merged) continue;
     for (const Side& x : sides) {
-      // The region on the other side of x; the pocket joins it.
-      const int q = x.positive ? output_sides[x.part].second : output_sides[x.part].first;
+      // The region beyond x; the pocket joins it.
+      const int q = beyond(x);
       if (q < 0 || q == static_cast<int>(r) || input_of_output[q] < 0) continue;
       const int q_input = input_of_output[q];
       // Every other side must then face q's input region: as it is labelled, or as an input part
-      // within half a cell does that faces q's region and the same region beyond (the side
-      // becomes that part).
+      // within half a cell is that has q's region on that side and the same region beyond (the
+      // side becomes that part).
       std::vector<std::pair<int, int>> relabel;  // (output part, input part)
       bool consistent = true;
       for (const Side& y : sides) {
-        if (y.part == x.part) continue;
-        const int p = input_part_of_output[y.part];
-        if ((y.positive ? input_sides[p].first : input_sides[p].second) == q_input) continue;
-        const int outer = y.positive ? output_sides[y.part].second : output_sides[y.part].first;
+        if (y.part == x.part || labelled(y) == q_input) continue;
+        const int outer = beyond(y);
         const int outer_input = outer >= 0 ? input_of_output[outer] : -1;
         int other = -1;
         if (outer < 0 || outer_input >= 0) {
@@ -158,27 +163,18 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
       if (!consistent || !leaves_no_border({x.part})) continue;
       remove_parts({x.part}, input.regions[q_input].name, volume, thickness);
       for (const auto& [y, p] : relabel) {
-        for (int t : output.parts[y].source_triangle) surface.triangle_part[t] = p;
-        for (int t : output.parts[y].source_triangle)
+        for (int t : output.parts[y].source_triangle) {
+          surface.triangle_part[t] = p;
           for (int v : surface.triangles[t])
             if (surface.features[v].kind == VertexFeature::Surface) surface.features[v].id = p;
+        }
         removed.back().relabeled.push_back(output.parts[y].name + " -> " + input.parts[p].name);
         part_removed[y] = 1;
       }
       break;
     }
   }
-  if (removed.empty()) return removed;
-  size_t kept = 0;
-  for (size_t t = 0; t < surface.triangles.size(); ++t) {
-    if (dead[t]) continue;
-    surface.triangles[kept] = surface.triangles[t];
-    surface.triangle_part[kept] = surface.triangle_part[t];
-    ++kept;
-  }
-  surface.triangles.resize(kept);
-  surface.triangle_part.resize(kept);
-  surface.remove_unused_vertices();
+  if (!removed.empty()) surface.remove_triangles(dead);
   return removed;
 }
 

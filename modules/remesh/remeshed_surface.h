@@ -25,6 +25,8 @@ struct RemeshedSurface {
 
   /// Drops vertices no triangle uses and renumbers the others.
   void remove_unused_vertices();
+  /// Drops the triangles marked in `dead` (one flag per triangle), then the unused vertices.
+  void remove_triangles(const std::vector<char>& dead);
 };
 
 }  // namespace voroseal
