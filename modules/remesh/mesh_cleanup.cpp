@@ -10,6 +10,7 @@
 #include "framework/geometry/self_intersections.h"
 #include "framework/geometry/surface_distance.h"
 #include "framework/geometry/triangle_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "framework/model/triangle_topology.h"
 
 namespace voroseal {
@@ -120,7 +121,28 @@ class Editor {
         ++n;
       }
     mean_edge_ = n > 0 ? sum / n : 1.0;
+    // The step of the file-coordinate grid (see snapped()): file coordinates up to twice the
+    // model's, minus an origin as large, stay within 53 bits of it.
+    const BoundingBox box = input.bbox();
+    double extent = 1.0;
+    for (const Vec3& corner : {box.min, box.max})
+      extent = std::max(extent, (corner + input.frame.origin).cwiseAbs().maxCoeff());
+    step_ = std::ldexp(1.0, std::ilogb(4.0 * extent) + 1 - 53);
+    for (Vec3& x : s.vertices) x = snapped(x);
     rebuild_grid();
+  }
+
+  // The exact tests here must see the coordinates that `voroseal check` reads back. Files hold
+  // local + frame origin, and a reader subtracts its own origin (an integer), both rounded: on
+  // folded or flat parts a pair can then cross in the file and not here (remeshed geogen
+  // thin_layers: 4 pairs here, 18 in the file). Positions are kept on a grid in file
+  // coordinates, the finest (about 2^-51 of the model's extent) on which adding or subtracting
+  // any integer origin up to the model's extent is exact.
+  Vec3 snapped(const Vec3& x) const {
+    const Vec3& origin = input_.frame.origin;
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = std::nearbyint((x[i] + origin[i]) / step_) * step_ - origin[i];
+    return out;
   }
 
   RemeshedSurface& s_;
@@ -130,6 +152,7 @@ class Editor {
   std::vector<char> dirty_;               // around_[v] may hold stale entries
   std::vector<char> dead_;
   double mean_edge_ = 1.0;
+  double step_ = 0.0;  // of the file-coordinate grid, see snapped()
   const SurfaceProjector* projector_ = nullptr;  // for flips across folds (see try_flip)
   double tolerance_ = 0.0;                       // the fidelity tolerance
 
@@ -267,7 +290,7 @@ class Editor {
   // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
   void move(int v, const Vec3& x, bool update_grid = true) {
     if (open_) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0});
-    s_.vertices[v] = x;
+    s_.vertices[v] = snapped(x);
     if (update_grid)
       for (int t : star(v)) grid_insert(t);
   }
@@ -301,7 +324,7 @@ class Editor {
   }
   // Vertices are never removed while editing (unused ones go at finish()).
   int add_vertex(const Vec3& x, const VertexFeature& feature) {
-    s_.vertices.push_back(x);
+    s_.vertices.push_back(snapped(x));
     s_.features.push_back(feature);
     around_.emplace_back();
     dirty_.push_back(0);
@@ -1395,6 +1418,144 @@ int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_d
   return count;
 }
 
+// ---- wedge tetrahedra: the flat tets a volume mesh keeping the surfaces cannot avoid ----
+
+// Two triangles consecutive around an edge and a few degrees apart (parts meeting at a thin
+// wedge along a contact) leave no room for a point between them: any tet mesh keeping the
+// surfaces holds the tetrahedron of the edge and the two apexes, whose shape is therefore set
+// here. Its dihedral angle at the edge is the wedge's; its other angles depend on where the
+// apexes lie along the edge, and are flat when one apex lies past the other (remeshed
+// CloudSpin_fixed: 2.4° in a 6.5° wedge).
+constexpr double kThinWedgeDeg = 30.0;
+
+// The apex pairs (c1, c2) of the thin wedges at edge (a, b).
+void thin_wedges(Editor& e, int a, int b, std::vector<std::pair<int, int>>& out) {
+  out.clear();
+  std::vector<int> tris;
+  e.edge_triangles(a, b, tris);
+  if (tris.size() < 2) return;
+  const Vec3 axis = (e.p(b) - e.p(a)).normalized();
+  std::vector<std::pair<double, int>> around;  // (angle about the edge, apex)
+  Vec3 x = Vec3::Zero(), y = Vec3::Zero();
+  for (int t : tris) {
+    const int c = Editor::opposite(e.s_.triangles[t], a, b);
+    Vec3 d = e.p(c) - e.p(a);
+    d -= d.dot(axis) * axis;
+    if (d.norm() == 0) return;
+    if (x.norm() == 0) {
+      x = d.normalized();
+      y = axis.cross(x);
+    }
+    around.push_back({std::atan2(d.dot(y), d.dot(x)), c});
+  }
+  std::sort(around.begin(), around.end());
+  const double thin = kThinWedgeDeg * M_PI / 180.0;
+  for (size_t i = 0; i < around.size(); ++i) {
+    const auto& [angle1, c1] = around[i];
+    const auto& [angle2, c2] = around[(i + 1) % around.size()];
+    double gap = angle2 - angle1;
+    if (gap < 0) gap += 2 * M_PI;
+    if (gap < thin && c1 != c2) out.push_back({c1, c2});
+  }
+}
+
+// The alive triangle of least index with edge (a, b).
+int first_triangle(Editor& e, int a, int b) {
+  int first = -1;
+  for (int t : e.star(a))
+    if (Editor::has(e.s_.triangles[t], b) && (first < 0 || t < first)) first = t;
+  return first;
+}
+
+double tet_min_dihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const auto angles = dihedral_angles_deg(a, b, c, d);
+  return *std::min_element(angles.begin(), angles.end());
+}
+
+// Smallest dihedral angle of the wedge tets with a vertex of the star of v, v at x (180 when
+// there is none).
+double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
+  double worst = 180.0;
+  std::vector<std::pair<int, int>> apexes;
+  const Vec3 old = e.p(v);
+  e.s_.vertices[v] = x;  // evaluated in place, put back below
+  for (int t : std::vector<int>(e.star(v))) {
+    const Triangle f = e.s_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int a = f[i], b = f[(i + 1) % 3];
+      if (!e.is_line_edge(a, b)) continue;
+      thin_wedges(e, a, b, apexes);
+      for (const auto& [c1, c2] : apexes)
+        worst = std::min(worst, tet_min_dihedral(e.p(a), e.p(b), e.p(c1), e.p(c2)));
+    }
+  }
+  e.s_.vertices[v] = old;
+  return worst;
+}
+
+// Moves the vertices of wedge tets flatter than `bound_deg` (their edge's and apexes') to where
+// the flattest wedge tet around them is least flat, among the candidates of angle_target(),
+// when their triangles keep a smallest angle of min(theirs, 20°). Each move is checked on its own.
+int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_deg) {
+  std::vector<int> wanted;
+  std::vector<std::pair<int, int>> apexes;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+    if (!e.alive(static_cast<int>(t))) continue;
+    const Triangle f = e.s_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      // Each edge once: from its triangle of least index.
+      const int a = f[i], b = f[(i + 1) % 3];
+      if (!e.is_line_edge(a, b) || first_triangle(e, a, b) != static_cast<int>(t)) continue;
+      thin_wedges(e, a, b, apexes);
+      for (const auto& [c1, c2] : apexes)
+        if (tet_min_dihedral(e.p(a), e.p(b), e.p(c1), e.p(c2)) < bound_deg) wanted.insert(wanted.end(), {a, b, c1, c2});
+    }
+  }
+  std::sort(wanted.begin(), wanted.end());
+  wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+  int moved = 0;
+  std::vector<int> nb;
+  for (int v : wanted) {
+    const VertexFeature f = e.s_.features[v];
+    if (f.kind == VertexFeature::Corner || f.pinned) continue;
+    const Vec3 old = e.p(v);
+    const double now = wedge_tets_min_dihedral(e, v, old);
+    if (now >= bound_deg) continue;
+    const double floor = std::min(ring_min_angle(e, v, old), 20.0);
+    double best_dihedral = now + 0.25;
+    Vec3 best = old;
+    auto consider = [&](const Vec3& x) {
+      if (!ring_unfolded_at(e, v, x) || ring_min_angle(e, v, x) < floor) return;
+      const double d = wedge_tets_min_dihedral(e, v, x);
+      if (d > best_dihedral) {
+        best_dihedral = d;
+        best = x;
+      }
+    };
+    e.neighbours(v, nb);
+    for (int w : nb) {
+      if (f.kind == VertexFeature::Contact) {
+        const VertexFeature& fw = e.s_.features[w];
+        const bool along = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
+                           (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
+        if (!along || !e.is_line_edge(v, w)) continue;
+        for (double t : {0.05, 0.1, 0.2, 0.3, 0.4}) consider(projector.on_contact(f.id, old + t * (e.p(w) - old)));
+      } else {
+        for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3}) consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
+      }
+    }
+    if (best == old) continue;
+    const std::vector<int> ring = e.star(v);
+    if (transact(e, ring, false, [&](std::vector<int>& after) {
+          e.move(v, best);
+          after = ring;
+          return true;
+        }))
+      ++moved;
+  }
+  return moved;
+}
+
 // ---- fidelity: split where the remesh strays from the input by more than a tolerance ----
 
 // Arc-length parametrisation of the input contacts, to find the input vertices of a contact
@@ -1863,6 +2024,11 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     const int moved = optimize_angles(e, projector, 30.0);
     if (moved == 0) break;
     report.flips += flip_edges(e, options.flip_flatness_deg);
+  }
+  for (int i = 0; options.wedge_dihedral_deg > 0.0 && i < 8; ++i) {
+    const int moved = open_wedge_tets(e, projector, options.wedge_dihedral_deg);
+    report.wedge_moves += moved;
+    if (moved == 0) break;
   }
   if (options.resolve_intersections) repair(e, projector, options, report);
   // The edits since (the repairs included) may have closed new fans of three; flips that make

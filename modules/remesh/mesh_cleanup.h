@@ -31,12 +31,17 @@ struct CleanupOptions {
   /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
   /// angle around them is largest (after the smoothing).
   int angle_passes = 8;
+  /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
+  /// holds the tetrahedron of the contact edge and the two apexes: their vertices move to make
+  /// those tets' smallest dihedral angle at least this (degrees) where they can. 0 disables it.
+  double wedge_dihedral_deg = 8.0;
 };
 
 struct CleanupReport {
   int valence3_removed = 0;
   int valence3_raised = 0;    // contact vertices given a fourth triangle in a part (a flip)
   int needles_collapsed = 0;
+  int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int flips = 0;
   int smoothing_passes = 0;
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed

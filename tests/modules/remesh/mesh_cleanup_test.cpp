@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <random>
 
 #include "framework/geometry/triangle_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "framework/model/model_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
 #include "modules/remesh/surface_projection.h"
@@ -238,6 +241,123 @@ TEST(MeshCleanup, OneTriangleOfACoincidentPairGoesWhenBothCannot) {
   const std::vector<int> input_part = flatten(input).part;
   EXPECT_EQ(std::count(s.triangle_part.begin(), s.triangle_part.end(), top),
             std::count(input_part.begin(), input_part.end(), top));
+}
+
+
+TEST(MeshCleanup, KeepsPositionsThatSurviveTheRoundTripThroughAFile) {
+  // Far from the origin, as geological coordinates are: a file holds local + origin, and a
+  // reader subtracts its own integer origin. The clean-up's exact tests must see what a reader
+  // sees, so every position it leaves must come back bit for bit through any integer origin.
+  const StructuralModel input =
+      build_model(test::lattice_box(6, true, Vec3(500000.3, 4000000.7, -2500.1), Vec3(503000.9, 4002000.2, -1200.6)));
+  ASSERT_NE(input.frame.origin, Vec3::Zero());
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-60.0, 60.0);
+  for (size_t v = 0; v < s.vertices.size(); ++v) {
+    const VertexFeature f = s.features[v];
+    if (f.kind == VertexFeature::Corner) continue;
+    const Vec3 moved = s.vertices[v] + Vec3(u(rng), u(rng), u(rng));
+    s.vertices[v] = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
+  }
+  clean_up(s, input, projector);
+  const Vec3 origin = input.frame.origin;
+  int moved_by_the_trip = 0;
+  for (const Vec3& local : s.vertices) {
+    const Vec3 file = local + origin;
+    for (const Vec3& other : {origin, Vec3(origin.x() + 1731, origin.y() - 977, origin.z() + 3), Vec3(0, 0, 0)}) {
+      const Vec3 read = file - other;  // what a reader with origin `other` holds
+      if (read + other != file || (other == origin && read != local)) ++moved_by_the_trip;
+    }
+  }
+  EXPECT_EQ(moved_by_the_trip, 0);
+}
+
+// Smallest dihedral angle of the tets that a thin wedge forces on any volume mesh keeping the
+// surface: each edge with one triangle of part `a` and one of part `b`, and the two apexes.
+double forced_wedge_dihedral(const RemeshedSurface& s, int a, int b) {
+  std::map<std::pair<int, int>, std::vector<int>> apexes[2];
+  for (size_t t = 0; t < s.triangles.size(); ++t) {
+    const int side = s.triangle_part[t] == a ? 0 : s.triangle_part[t] == b ? 1 : -1;
+    if (side < 0) continue;
+    const Triangle& f = s.triangles[t];
+    for (int i = 0; i < 3; ++i)
+      apexes[side][{std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])}].push_back(f[(i + 2) % 3]);
+  }
+  double worst = 180.0;
+  for (const auto& [edge, on_a] : apexes[0]) {
+    const auto it = apexes[1].find(edge);
+    if (it == apexes[1].end()) continue;
+    const auto angles = dihedral_angles_deg(s.vertices[edge.first], s.vertices[edge.second], s.vertices[on_a[0]],
+                                            s.vertices[it->second[0]]);
+    worst = std::min(worst, *std::min_element(angles.begin(), angles.end()));
+  }
+  return worst;
+}
+
+TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
+  // Two sheets meeting at a contact (x = 0) at 8 degrees, a pinch-out: a flat one and a tilted
+  // one whose first row of vertices off the contact is shifted along it, so the apexes facing
+  // each other across the wedge are staggered and the tets between them are flat.
+  const int n = 6;
+  const double tilt = std::tan(8.0 * M_PI / 180.0);
+  SurfaceSoup soup;
+  auto point = [&](int sheet, int i, int j) {
+    if (i == 0) return j;  // the contact, shared
+    return (n + 1) + ((sheet * n) + (i - 1)) * (n + 1) + j;
+  };
+  for (int j = 0; j <= n; ++j) soup.points.push_back({0, j * 1.0 / n, 0});
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int i = 1; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double x = i * 1.0 / n;
+        soup.points.push_back({x, j * 1.0 / n, sheet == 0 ? 0.0 : tilt * x});
+      }
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const int p00 = point(sheet, i, j), p10 = point(sheet, i + 1, j), p01 = point(sheet, i, j + 1),
+                  p11 = point(sheet, i + 1, j + 1);
+        if (sheet == 0) {
+          soup.triangles.push_back({p00, p10, p11});
+          soup.triangles.push_back({p00, p11, p01});
+        } else {
+          soup.triangles.push_back({p00, p10, p01});
+          soup.triangles.push_back({p10, p11, p01});
+        }
+        soup.triangle_group.insert(soup.triangle_group.end(), {sheet, sheet});
+      }
+  soup.groups = {{"base", "base", SurfaceKind::Horizon, ""}, {"onlap", "onlap", SurfaceKind::Horizon, ""}};
+  const StructuralModel input = build_model(soup);
+  ASSERT_EQ(input.parts.size(), 2u);
+  const SurfaceProjector projector(input);
+  RemeshedSurface given = as_remeshed(input);
+  // The tilted sheet's first row off the contact slides 0.7 cell along it (in its plane).
+  for (Vec3& x : given.vertices) {
+    const Vec3 file = x + input.frame.origin;
+    if (std::abs(file.x() - 1.0 / n) < 1e-9 && file.z() > 1e-9 && file.y() > 1e-9 && file.y() < 1 - 1e-9)
+      x.y() -= 0.7 / n;
+  }
+  const double before = forced_wedge_dihedral(given, 0, 1);
+  ASSERT_LT(before, 5.0);
+
+  // The wedge pass alone (no smoothing, flips or angle passes, which would shift the rows
+  // back here), and nothing.
+  CleanupOptions with, without;
+  with.smoothing_iterations = without.smoothing_iterations = 0;
+  with.angle_passes = without.angle_passes = 0;
+  with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
+  without.wedge_dihedral_deg = 0.0;
+  RemeshedSurface plain = given;
+  clean_up(plain, input, projector, without);
+  RemeshedSurface opened = given;
+  const CleanupReport report = clean_up(opened, input, projector, with);
+  EXPECT_GT(report.wedge_moves, 0);
+  const double after = forced_wedge_dihedral(opened, 0, 1);
+  EXPECT_GT(after, forced_wedge_dihedral(plain, 0, 1) + 1.0);
+  EXPECT_GT(after, 5.5);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left, 0);
 }
 
 }  // namespace
