@@ -6,22 +6,42 @@
 
 namespace voroseal {
 
+namespace {
+
+// The angle at the vertex facing edge `edge` (edge k joins p[k] and p[k + 1]), in degrees.
+double angle_facing(const Vec3* const p[3], int edge, double twice_area) {
+  const int k = (edge + 2) % 3;
+  const Vec3 u = *p[(k + 1) % 3] - *p[k], v = *p[(k + 2) % 3] - *p[k];
+  return std::atan2(twice_area, u.dot(v)) * (180.0 / M_PI);
+}
+
+}  // namespace
+
+// The smallest angle faces the shortest edge and the largest the longest (law of sines): two
+// angles are measured, not three (this is the remesher's clean-up's innermost measure).
 TriangleQuality measure_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3* p[3] = {&a, &b, &c};
-  double len[3], angle[3];
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 u = *p[(k + 1) % 3] - *p[k], v = *p[(k + 2) % 3] - *p[k];
-    len[k] = u.norm();  // edge k -> k+1
-    angle[k] = std::atan2(u.cross(v).norm(), u.dot(v)) * (180.0 / M_PI);
-  }
+  double len[3];
+  for (int k = 0; k < 3; ++k) len[k] = (*p[(k + 1) % 3] - *p[k]).norm();
+  const double twice_area = (b - a).cross(c - a).norm();
+  const int shortest = static_cast<int>(std::min_element(len, len + 3) - len);
+  const int longest = static_cast<int>(std::max_element(len, len + 3) - len);
   TriangleQuality tq;
-  tq.area = 0.5 * (b - a).cross(c - a).norm();
-  const double h_max = std::max({len[0], len[1], len[2]});
+  tq.area = 0.5 * twice_area;
+  const double h_max = len[longest];
   const double half_perimeter = 0.5 * (len[0] + len[1] + len[2]);
   tq.q = h_max > 0 ? 6.0 * tq.area / (std::sqrt(3.0) * h_max * half_perimeter) : 0.0;
-  tq.min_angle_deg = std::min({angle[0], angle[1], angle[2]});
-  tq.max_angle_deg = std::max({angle[0], angle[1], angle[2]});
+  tq.min_angle_deg = angle_facing(p, shortest, twice_area);
+  tq.max_angle_deg = angle_facing(p, longest, twice_area);
   return tq;
+}
+
+double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3* p[3] = {&a, &b, &c};
+  double len[3];
+  for (int k = 0; k < 3; ++k) len[k] = (*p[(k + 1) % 3] - *p[k]).squaredNorm();
+  const int shortest = static_cast<int>(std::min_element(len, len + 3) - len);
+  return angle_facing(p, shortest, (b - a).cross(c - a).norm());
 }
 
 std::vector<TriangleQuality> triangle_qualities(const std::vector<Vec3>& vertices,

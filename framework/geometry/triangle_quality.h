@@ -20,6 +20,9 @@ struct TriangleQuality {
 /// Angles from atan2(|u × v|, u · v), robust for needles.
 TriangleQuality measure_triangle(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// The smallest angle alone (the one facing the shortest edge), as measure_triangle() gives it.
+double min_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// Aggregates over a set of triangles.
 struct QualitySummary {
   long triangles = 0;

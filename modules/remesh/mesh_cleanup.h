@@ -31,6 +31,11 @@ struct CleanupOptions {
   /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
   /// angle around them is largest (after the smoothing).
   int angle_passes = 8;
+  /// Passes moving the vertices of triangles with Q below `quality_below` to where the sum of Q
+  /// of their triangles is largest, none of them getting sharper than 30 degrees (after the
+  /// angle passes; see optimize_quality in mesh_cleanup.cpp).
+  int quality_passes = 4;
+  double quality_below = 0.9;
   /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
   /// holds the tetrahedron of the contact edge and the two apexes: their vertices move to make
   /// those tets' smallest dihedral angle at least this (degrees) where they can. 0 disables it.
@@ -41,6 +46,7 @@ struct CleanupReport {
   int valence3_removed = 0;
   int valence3_raised = 0;    // contact vertices given a fourth triangle in a part (a flip)
   int needles_collapsed = 0;
+  int quality_moves = 0;      // vertex moves of the quality passes
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int flips = 0;
   int smoothing_passes = 0;

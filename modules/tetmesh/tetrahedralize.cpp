@@ -18,6 +18,7 @@
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "modules/tetmesh/triangle_tree.h"
+#include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
@@ -388,11 +389,6 @@ double min_dihedral(const VolumeMesh& mesh) {
   return smallest;
 }
 
-double smallest_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c) {
-  auto angle = [](const Vec3& u, const Vec3& v) { return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / M_PI; };
-  return std::min({angle(b - a, c - a), angle(a - b, c - b), angle(a - c, b - c)});
-}
-
 /// Circumcentre of the tet p[0..3] (not flat).
 Vec3 circumcentre(const Vec3 p[4]) {
   Eigen::Matrix3d a;
@@ -484,7 +480,7 @@ std::vector<Vec3> sliver_points(const VolumeMesh& mesh, const TriangleTree& surf
       if (!on_surface[opposite]) continue;
       const int i = (opposite + 1) % 4, j = (opposite + 2) % 4, k = (opposite + 3) % 4;
       ++faces;
-      sharpest = std::min(sharpest, smallest_angle_deg(p[i], p[j], p[k]));
+      sharpest = std::min(sharpest, min_angle_deg(p[i], p[j], p[k]));
       Vec3 n = (p[j] - p[i]).cross(p[k] - p[i]).normalized();
       if (n.dot(p[opposite] - p[i]) < 0.0) n = -n;
       inward += n;
@@ -534,7 +530,7 @@ std::pair<double, long> surface_needles(const StructuralModel& model) {
   double smallest = 180.0;
   long needles = 0;
   for (const Triangle& t : flatten(model).triangles) {
-    const double angle = smallest_angle_deg(model.vertices[t[0]], model.vertices[t[1]], model.vertices[t[2]]);
+    const double angle = min_angle_deg(model.vertices[t[0]], model.vertices[t[1]], model.vertices[t[2]]);
     smallest = std::min(smallest, angle);
     if (angle < 1.0) ++needles;
   }
@@ -555,7 +551,7 @@ SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
   // Per vertex: 0 inside, 1 on a surface, 2 on a needle (a triangle sharper than the bound).
   std::vector<char> kind(mesh.vertices.size(), 0);
   for (const Triangle& t : mesh.triangles) {
-    const char k = smallest_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) < bound_deg ? 2 : 1;
+    const char k = min_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) < bound_deg ? 2 : 1;
     for (int v : t) kind[v] = std::max(kind[v], k);
   }
   for (const Tetrahedron& t : mesh.tets) {

@@ -80,6 +80,54 @@ TEST(MeshCleanup, SmoothingImprovesJitteredMeshAndKeepsFeatures) {
   for (const Region& r : out.regions) EXPECT_NEAR(-out.signed_volume(r.sides), 0.5, 1e-9);
 }
 
+struct Shape {
+  double mean_q = 0.0;
+  int sharp = 0;  // triangles with an angle below 30 degrees
+};
+Shape shape(const RemeshedSurface& s) {
+  Shape out;
+  for (const Triangle& t : s.triangles) {
+    const TriangleQuality q = measure_triangle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+    out.mean_q += q.q / s.triangles.size();
+    if (q.min_angle_deg < 30.0) ++out.sharp;
+  }
+  return out;
+}
+
+TEST(MeshCleanup, QualityPassesRaiseTheMeanQWithoutSharperTriangles) {
+  // A jittered box with a horizon, one smoothing pass: the quality passes then move vertices
+  // (surface vertices in their part, contact vertices along their contact) to better shapes.
+  const StructuralModel input = build_model(test::lattice_box(8, true));
+  const SurfaceProjector projector(input);
+  RemeshedSurface jittered = as_remeshed(input);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for (size_t v = 0; v < jittered.vertices.size(); ++v) {
+    const VertexFeature f = jittered.features[v];
+    if (f.kind == VertexFeature::Corner) continue;
+    const Vec3 moved = jittered.vertices[v] + Vec3(u(rng), u(rng), u(rng));
+    jittered.vertices[v] =
+        f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
+  }
+  CleanupOptions with, without;
+  with.smoothing_iterations = without.smoothing_iterations = 1;
+  without.quality_passes = 0;
+  RemeshedSurface plain = jittered, optimised = jittered;
+  clean_up(plain, input, projector, without);
+  const CleanupReport report = clean_up(optimised, input, projector, with);
+  EXPECT_GT(report.quality_moves, 0);
+  const Shape a = shape(plain), b = shape(optimised);
+  EXPECT_GT(b.mean_q, a.mean_q + 0.02) << "without " << a.mean_q << ", with " << b.mean_q;
+  EXPECT_LE(b.sharp, a.sharp);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left, 0);
+  for (size_t v = 0; v < optimised.vertices.size(); ++v) {
+    const VertexFeature f = optimised.features[v];
+    if (f.kind == VertexFeature::Surface) EXPECT_LT(projector.distance_to_part(f.id, optimised.vertices[v]), 1e-9);
+    if (f.kind == VertexFeature::Contact)
+      EXPECT_LT((projector.on_contact(f.id, optimised.vertices[v]) - optimised.vertices[v]).norm(), 1e-9);
+  }
+}
+
 TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   const StructuralModel input = build_model(test::lattice_box(4, false));
   const SurfaceProjector projector(input);
@@ -342,12 +390,13 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
   const double before = forced_wedge_dihedral(given, 0, 1);
   ASSERT_LT(before, 5.0);
 
-  // The wedge pass alone (no smoothing, flips or angle passes, which would shift the rows
-  // back here), and nothing.
+  // The wedge pass alone (no smoothing, flips, angle or quality passes, which would shift the
+  // rows back here), and nothing.
   CleanupOptions with, without;
   with.smoothing_iterations = without.smoothing_iterations = 0;
   with.angle_passes = without.angle_passes = 0;
   with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
+  with.quality_passes = without.quality_passes = 0;
   without.wedge_dihedral_deg = 0.0;
   RemeshedSurface plain = given;
   clean_up(plain, input, projector, without);
