@@ -424,10 +424,14 @@ class Editor {
     Census c;
     std::vector<int> index, query;
     std::vector<Triangle> tris;
+    std::vector<std::pair<int, int>> edges;
     auto touched = [&](const Triangle& f) { return moved[f[0]] || moved[f[1]] || moved[f[2]]; };
     for (size_t t = 0; t < s_.triangles.size(); ++t) {
       if (dead_[t]) continue;
-      const bool near = touched(s_.triangles[t]);
+      const Triangle& f = s_.triangles[t];
+      const bool near = touched(f);
+      if (near)
+        for (int i = 0; i < 3; ++i) edges.push_back({std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])});
       if (degenerate(static_cast<int>(t))) {
         if (near) c.degenerate.push_back(static_cast<int>(t));
         continue;
@@ -439,11 +443,6 @@ class Editor {
     }
     for (const auto& [a, b] : find_intersections_with(s_.vertices, tris, query))
       c.crossings.emplace_back(index[a], index[b]);
-    std::vector<std::pair<int, int>> edges;
-    for (int q : query) {
-      const Triangle& f = tris[q];
-      for (int i = 0; i < 3; ++i) edges.push_back({std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])});
-    }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     for (const auto& [a, b] : edges) {
