@@ -199,12 +199,26 @@ class RemeshModule final : public Module {
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 
+    // Crossing triangles or holes left by the clean-up make the output an invalid structural
+    // model (what `voroseal check` reports as errors): it is still written, to be looked at, but
+    // the verdict is invalid (exit code 1; a study records the step as invalid), so that scripts
+    // notice. Without the clean-up (the raw dual mesh, asked for) nothing is claimed.
+    const bool valid = !remesh_options.clean_up ||
+                       (result.cleanup.intersections_left == 0 && result.cleanup.holes_left == 0);
+    if (remesh_options.clean_up) report["valid"] = valid;
+    if (!valid) context.exit_code = std::max(context.exit_code, 1);
+
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
     if (parameters.has("output")) {
       const std::string out = parameters.get_string("output");
       write_model(*context.model, out, WriteOptions{{context.input_path}});
       context.log.info("remesh: wrote " + out);
     }
+    if (!valid)
+      context.log.error("remesh: the output is not a valid model (" +
+                        std::to_string(result.cleanup.intersections_left) + " intersecting triangle pairs, " +
+                        std::to_string(result.cleanup.holes_left) +
+                        " holes)" + (parameters.has("output") ? "; written for inspection" : ""));
     if (parameters.has("tetmesh")) {
       if (context.registry == nullptr) throw ParameterError("remesh --tetmesh: no module registry in this run");
       const Module& tetmesh = context.registry->get("tetmesh");

@@ -108,6 +108,33 @@ TEST(RemeshModule, RejectsBadParameters) {
   }
 }
 
+TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
+  // A fault crossing the horizon without a contact (the input itself is not conformal): the
+  // remeshed surfaces cross where the input's do, which no clean-up can undo. The output is
+  // written, to be looked at, and the verdict is invalid (exit code 1), as `check` would say.
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+  SurfaceSoup soup = test::lattice_box(6, true);
+  test::append(soup, test::floating_fault(6, 0.5, 0.3, 0.7));
+  harness.context.model = std::make_shared<StructuralModel>(build_model(soup));
+  const std::string out = (std::filesystem::temp_directory_path() / "voroseal_remesh_invalid_test.obj").string();
+  std::filesystem::remove(out);
+  harness.module.run(harness.context, Parameters(harness.module.parameters(),
+                                                 {{"seeds", 400}, {"iterations", 20}, {"output", out}}));
+  const nlohmann::json& r = harness.context.report.at("remesh");
+  EXPECT_GT(r.at("cleanup").at("intersections_left").get<int>(), 0);
+  EXPECT_FALSE(r.at("valid").get<bool>());
+  EXPECT_EQ(harness.context.exit_code, 1);
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+
+  // The box and horizon alone remesh to a valid model.
+  test::ModuleHarness clean(voroseal_register_remesh, "remesh");
+  clean.context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(6, true)));
+  clean.module.run(clean.context, Parameters(clean.module.parameters(), {{"seeds", 400}, {"iterations", 20}}));
+  EXPECT_TRUE(clean.context.report.at("remesh").at("valid").get<bool>());
+  EXPECT_EQ(clean.context.exit_code, 0);
+}
+
 TEST(SharedModels, RestrictedVoronoiDiagramPartitionsRingModels) {
   for (const char* name : {"ring/modelA1.ml", "ring/CloudSpin_fixed.ml"}) {
     SCOPED_TRACE(name);
