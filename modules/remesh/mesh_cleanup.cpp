@@ -418,6 +418,15 @@ class Editor {
       return out;
     }
   };
+  // Holes, leaks and folds on edge (a, b) into a census.
+  void add_edge_violations(int a, int b, Census& c) {
+    Violations v;
+    edge_violations(a, b, v);
+    if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
+    c.count.holes += v.holes;
+    c.count.leaks += v.leaks;
+    c.count.folds += v.folds;
+  }
   // The violations with a triangle that has a vertex marked in `moved` (counts included), for
   // checking a batch of moves: no other triangle can have changed.
   Census census_around(const std::vector<char>& moved) {
@@ -445,14 +454,7 @@ class Editor {
       c.crossings.emplace_back(index[a], index[b]);
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    for (const auto& [a, b] : edges) {
-      Violations v;
-      edge_violations(a, b, v);
-      if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
-      c.count.holes += v.holes;
-      c.count.leaks += v.leaks;
-      c.count.folds += v.folds;
-    }
+    for (const auto& [a, b] : edges) add_edge_violations(a, b, c);
     c.count.crossings = static_cast<int>(c.crossings.size());
     c.count.degenerate = static_cast<int>(c.degenerate.size());
     return c;
@@ -494,14 +496,7 @@ class Editor {
       const bool plain = j - i == 2 && s_.triangle_part[edges[i].second] == s_.triangle_part[edges[i + 1].second] &&
                          has_directed_edge(s_.triangles[edges[i].second], a, b) !=
                              has_directed_edge(s_.triangles[edges[i + 1].second], a, b);
-      if (!plain || pleat(edges[i].second, edges[i + 1].second)) {
-        Violations v;
-        edge_violations(a, b, v);
-        if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
-        c.count.holes += v.holes;
-        c.count.leaks += v.leaks;
-        c.count.folds += v.folds;
-      }
+      if (!plain || pleat(edges[i].second, edges[i + 1].second)) add_edge_violations(a, b, c);
       i = j;
     }
     c.count.crossings = static_cast<int>(c.crossings.size());
@@ -1230,6 +1225,26 @@ int flip_edges(Editor& e, double flatness_deg) {
   return flips;
 }
 
+// Whether w follows contact vertex v along v's contact: a vertex of that contact, or a corner
+// ending it, joined to v by a contact edge.
+bool along_contact(Editor& e, int v, int w) {
+  const int contact = e.s_.features[v].id;
+  const VertexFeature& fw = e.s_.features[w];
+  const bool on = (fw.kind == VertexFeature::Contact && fw.id == contact) ||
+                  (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, contact));
+  return on && e.is_line_edge(v, w);
+}
+
+// Moves v to x when the validity of its ring allows it (one checked edit).
+bool move_checked(Editor& e, int v, const Vec3& x) {
+  const std::vector<int> ring = e.star(v);
+  return transact(e, ring, false, [&](std::vector<int>& after) {
+    e.move(v, x);
+    after = ring;
+    return true;
+  });
+}
+
 // Where smoothing would move vertex v: surface vertices toward the area-weighted centroid of
 // their ring within the tangent plane, contact vertices toward the middle of their two contact
 // neighbours. False when v stays.
@@ -1263,10 +1278,7 @@ bool smoothing_target(Editor& e, int v, Vec3& target) {
   Vec3 sum = Vec3::Zero();
   int count = 0;
   for (int w : nb) {
-    const VertexFeature& fw = e.s_.features[w];
-    const bool on_contact = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
-                            (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
-    if (on_contact && e.is_line_edge(v, w)) {
+    if (along_contact(e, v, w)) {
       sum += e.p(w);
       ++count;
     }
@@ -1428,10 +1440,7 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
   e.neighbours(v, nb);
   if (f.kind == VertexFeature::Contact) {
     for (int w : nb) {
-      const VertexFeature& fw = e.s_.features[w];
-      const bool along = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
-                         (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
-      if (!along || !e.is_line_edge(v, w)) continue;
+      if (!along_contact(e, v, w)) continue;
       for (double t : {0.08, 0.16, 0.24, 0.32, 0.4})
         consider(projector.on_contact(f.id, old + t * (e.p(w) - old)));
     }
@@ -1457,14 +1466,7 @@ int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_d
   int count = 0;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
-    if (!wanted[v] || !angle_target(e, projector, v, 0.5, x)) continue;
-    const std::vector<int> ring = e.star(v);
-    if (transact(e, ring, false, [&](std::vector<int>& after) {
-          e.move(v, x);
-          after = ring;
-          return true;
-        }))
-      ++count;
+    if (wanted[v] && angle_target(e, projector, v, 0.5, x) && move_checked(e, v, x)) ++count;
   }
   return count;
 }
@@ -1555,10 +1557,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     e.neighbours(v, nb);
     if (f.kind == VertexFeature::Contact) {
       for (int w : nb) {
-        const VertexFeature& fw = e.s_.features[w];
-        const bool along = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
-                           (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
-        if (!along || !e.is_line_edge(v, w)) continue;
+        if (!along_contact(e, v, w)) continue;
         for (double t : {0.03, 0.08, 0.15, 0.25}) {
           const Vec3 x = projector.on_contact(f.id, old + t * (e.p(w) - old));
           if (better(x, best_score)) best = x;
@@ -1586,12 +1585,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     // The ring keeps to the input: no triangle middle strays farther from its part than the
     // fidelity tolerance, or than it did (moves along a crease of a part cut it otherwise).
     if (e.tolerance_ > 0.0 && !stays_close(e, projector, v, best)) continue;
-    if (transact(e, ring, false, [&](std::vector<int>& after) {
-          e.move(v, best);
-          after = ring;
-          return true;
-        }))
-      ++count;
+    if (move_checked(e, v, best)) ++count;
   }
   return count;
 }
@@ -1713,23 +1707,13 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
     e.neighbours(v, nb);
     for (int w : nb) {
       if (f.kind == VertexFeature::Contact) {
-        const VertexFeature& fw = e.s_.features[w];
-        const bool along = (fw.kind == VertexFeature::Contact && fw.id == f.id) ||
-                           (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, f.id));
-        if (!along || !e.is_line_edge(v, w)) continue;
+        if (!along_contact(e, v, w)) continue;
         for (double t : {0.05, 0.1, 0.2, 0.3, 0.4}) consider(projector.on_contact(f.id, old + t * (e.p(w) - old)));
       } else {
         for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3}) consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
       }
     }
-    if (best == old) continue;
-    const std::vector<int> ring = e.star(v);
-    if (transact(e, ring, false, [&](std::vector<int>& after) {
-          e.move(v, best);
-          after = ring;
-          return true;
-        }))
-      ++moved;
+    if (best != old && move_checked(e, v, best)) ++moved;
   }
   return moved;
 }

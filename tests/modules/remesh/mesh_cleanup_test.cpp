@@ -37,20 +37,24 @@ double mean_min_angle(const RemeshedSurface& s) {
   return sum / s.triangles.size();
 }
 
-TEST(MeshCleanup, SmoothingImprovesJitteredMeshAndKeepsFeatures) {
-  const StructuralModel input = build_model(test::lattice_box(8, true));
-  const SurfaceProjector projector(input);
-  RemeshedSurface s = as_remeshed(input);
-  // Jitter every vertex along its feature: surface vertices in their face plane, contact
-  // vertices along their contact.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-0.04, 0.04);
+// Moves every vertex but the corners by up to `amplitude` along its feature: surface vertices
+// in their part, contact vertices along their contact.
+void jitter(RemeshedSurface& s, const SurfaceProjector& projector, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
   for (size_t v = 0; v < s.vertices.size(); ++v) {
     const VertexFeature f = s.features[v];
     if (f.kind == VertexFeature::Corner) continue;
     const Vec3 moved = s.vertices[v] + Vec3(u(rng), u(rng), u(rng));
     s.vertices[v] = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
   }
+}
+
+TEST(MeshCleanup, SmoothingImprovesJitteredMeshAndKeepsFeatures) {
+  const StructuralModel input = build_model(test::lattice_box(8, true));
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  jitter(s, projector, 0.04, 7);
   const double before = mean_min_angle(s);
   const size_t corners_before = input.corners.size();
   const CleanupReport report = clean_up(s, input, projector);
@@ -100,15 +104,7 @@ TEST(MeshCleanup, QualityPassesRaiseTheMeanQWithoutSharperTriangles) {
   const StructuralModel input = build_model(test::lattice_box(8, true));
   const SurfaceProjector projector(input);
   RemeshedSurface jittered = as_remeshed(input);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-0.05, 0.05);
-  for (size_t v = 0; v < jittered.vertices.size(); ++v) {
-    const VertexFeature f = jittered.features[v];
-    if (f.kind == VertexFeature::Corner) continue;
-    const Vec3 moved = jittered.vertices[v] + Vec3(u(rng), u(rng), u(rng));
-    jittered.vertices[v] =
-        f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
-  }
+  jitter(jittered, projector, 0.05, 11);
   CleanupOptions with, without;
   with.smoothing_iterations = without.smoothing_iterations = 1;
   without.quality_passes = 0;
@@ -301,14 +297,7 @@ TEST(MeshCleanup, KeepsPositionsThatSurviveTheRoundTripThroughAFile) {
   ASSERT_NE(input.frame.origin, Vec3::Zero());
   const SurfaceProjector projector(input);
   RemeshedSurface s = as_remeshed(input);
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-60.0, 60.0);
-  for (size_t v = 0; v < s.vertices.size(); ++v) {
-    const VertexFeature f = s.features[v];
-    if (f.kind == VertexFeature::Corner) continue;
-    const Vec3 moved = s.vertices[v] + Vec3(u(rng), u(rng), u(rng));
-    s.vertices[v] = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
-  }
+  jitter(s, projector, 60.0, 3);
   clean_up(s, input, projector);
   const Vec3 origin = input.frame.origin;
   int moved_by_the_trip = 0;
