@@ -215,6 +215,36 @@ class Editor {
     return n;
   }
 
+  // A triangle around an edge: its angle about the edge, and whether it runs along a -> b.
+  struct Blade {
+    double angle;
+    int triangle;
+    bool forward;
+  };
+  // The triangles `tris` of edge (a, b) in radial order (angles about the edge from a fixed
+  // direction, increasing); false, `fan` empty, when the edge or a triangle is degenerate.
+  bool radial_order(int a, int b, const std::vector<int>& tris, std::vector<Blade>& fan) const {
+    fan.clear();
+    const Vec3 axis = p(b) - p(a);
+    if (axis.squaredNorm() == 0) return false;
+    const Vec3 n = axis.normalized();
+    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    const Vec3 u = n.cross(helper).normalized();
+    const Vec3 v = n.cross(u);
+    for (int t : tris) {
+      const Triangle& f = s_.triangles[t];
+      Vec3 w = p(opposite(f, a, b)) - p(a);
+      w -= w.dot(n) * n;
+      if (w.squaredNorm() == 0) {
+        fan.clear();
+        return false;
+      }
+      fan.push_back({std::atan2(w.dot(v), w.dot(u)), t, has_directed_edge(f, a, b)});
+    }
+    std::sort(fan.begin(), fan.end(), [](const Blade& x, const Blade& y) { return x.angle < y.angle; });
+    return true;
+  }
+
   // Alive triangles containing edge (u, v).
   void edge_triangles(int u, int v, std::vector<int>& out) {
     out.clear();
@@ -649,22 +679,7 @@ class Editor {
       if (pleat(t0, t1)) ++out.folds;
       return;
     }
-    // Radial order of the triangles around the edge.
-    const Vec3 axis = p(b) - p(a);
-    if (axis.squaredNorm() == 0) return;  // the triangles are degenerate, counted there
-    const Vec3 n = axis.normalized();
-    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    const Vec3 u = n.cross(helper).normalized();
-    const Vec3 v = n.cross(u);
-    fan_.clear();
-    for (int t : fan_tris_) {
-      const Triangle& f = s_.triangles[t];
-      Vec3 w = p(opposite(f, a, b)) - p(a);
-      w -= w.dot(n) * n;
-      if (w.squaredNorm() == 0) return;  // degenerate, counted there
-      fan_.push_back({std::atan2(w.dot(v), w.dot(u)), t, has_directed_edge(f, a, b)});
-    }
-    std::sort(fan_.begin(), fan_.end(), [](const Blade& x, const Blade& y) { return x.angle < y.angle; });
+    if (!radial_order(a, b, fan_tris_, fan_)) return;  // degenerate triangles, counted there
     const double fold = kFoldDeg * M_PI / 180.0;
     for (size_t i = 0; i < k; ++i) {
       const Blade& lo = fan_[i];
@@ -680,12 +695,6 @@ class Editor {
       if (region_lo != region_hi) ++out.leaks;
     }
   }
-
-  struct Blade {
-    double angle;
-    int triangle;
-    bool forward;
-  };
 
   std::vector<Change> journal_;
   bool open_ = false;
@@ -1605,28 +1614,15 @@ void thin_wedges(Editor& e, int a, int b, std::vector<std::pair<int, int>>& out)
   out.clear();
   std::vector<int> tris;
   e.edge_triangles(a, b, tris);
-  if (tris.size() < 2) return;
-  const Vec3 axis = (e.p(b) - e.p(a)).normalized();
-  std::vector<std::pair<double, int>> around;  // (angle about the edge, apex)
-  Vec3 x = Vec3::Zero(), y = Vec3::Zero();
-  for (int t : tris) {
-    const int c = Editor::opposite(e.s_.triangles[t], a, b);
-    Vec3 d = e.p(c) - e.p(a);
-    d -= d.dot(axis) * axis;
-    if (d.norm() == 0) return;
-    if (x.norm() == 0) {
-      x = d.normalized();
-      y = axis.cross(x);
-    }
-    around.push_back({std::atan2(d.dot(y), d.dot(x)), c});
-  }
-  std::sort(around.begin(), around.end());
+  std::vector<Editor::Blade> fan;
+  if (tris.size() < 2 || !e.radial_order(a, b, tris, fan)) return;
   const double thin = kThinWedgeDeg * M_PI / 180.0;
-  for (size_t i = 0; i < around.size(); ++i) {
-    const auto& [angle1, c1] = around[i];
-    const auto& [angle2, c2] = around[(i + 1) % around.size()];
-    double gap = angle2 - angle1;
-    if (gap < 0) gap += 2 * M_PI;
+  for (size_t i = 0; i < fan.size(); ++i) {
+    const Editor::Blade& lo = fan[i];
+    const Editor::Blade& hi = fan[(i + 1) % fan.size()];
+    const double gap = i + 1 < fan.size() ? hi.angle - lo.angle : hi.angle + 2.0 * M_PI - lo.angle;
+    const int c1 = Editor::opposite(e.s_.triangles[lo.triangle], a, b);
+    const int c2 = Editor::opposite(e.s_.triangles[hi.triangle], a, b);
     if (gap < thin && c1 != c2) out.push_back({c1, c2});
   }
 }
