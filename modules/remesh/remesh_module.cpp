@@ -184,9 +184,6 @@ class RemeshModule final : public Module {
                          {"folds_left", result.cleanup.folds_left}};
     report["min_feature"] = result.min_feature;
     report["sharp_points"] = result.build.sharp_points;
-    if (result.cleanup.intersections_left > 0)
-      context.log.warning("remesh: " + std::to_string(result.cleanup.intersections_left) +
-                          " pairs of triangles still intersect (run `voroseal check` on the output)");
     const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +
                         result.cleanup.pinches_left + result.cleanup.folds_left;
     if (invalid > 0)
