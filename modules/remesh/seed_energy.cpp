@@ -108,7 +108,15 @@ struct EnergyVisitor {
       if (((rec.edge_owner >> e) & 1u) == 0) continue;
       const ClipVertex& a = poly[k];
       const ClipVertex& b = poly[k + 1 == n ? 0 : k + 1];
-      const SegmentEnergy se = boundary_segment_energy(a.x - ps, b.x - ps);
+      SegmentEnergy se = boundary_segment_energy(a.x - ps, b.x - ps);
+      if (kDensity) {
+        // rho at the line edge's middle: F_B scales like F_CVT (boundary_energy.h).
+        const double w = 0.5 * (rec.density[e] + rec.density[e == 2 ? 0 : e + 1]);
+        se.energy *= w;
+        se.d_seed *= w;
+        se.d_c1 *= w;
+        se.d_c2 *= w;
+      }
       acc->boundary += se.energy;
       Vec3 gs = se.d_seed;
       const Vec3 d = rec.p[e == 2 ? 0 : e + 1] - rec.p[e];

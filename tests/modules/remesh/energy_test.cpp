@@ -152,6 +152,32 @@ TEST(SeedEnergy, BoundaryGradientMatchesFiniteDifferencesOnContacts) {
   check_gradient(geometry, sample_seeds(geometry, 120, 5), true, 10);
 }
 
+TEST(SeedEnergy, BoundaryGradientMatchesFiniteDifferencesWithDensity) {
+  const StructuralModel model = build_model(test::box_with_crossing_planes(6));
+  std::vector<double> rho(model.vertices.size());
+  for (size_t v = 0; v < rho.size(); ++v) rho[v] = 0.2 + std::pow(model.vertices[v].norm(), 2);
+  const ModelGeometry geometry(model, rho);
+  ASSERT_GT(geometry.num_line_edges(), 0);
+  check_gradient(geometry, sample_seeds(geometry, 120, 5), true, 10);
+}
+
+TEST(SeedEnergy, AConstantDensityScalesBothEnergiesAlike) {
+  // rho = c everywhere must not change the balance of F_CVT and F_B (nor the optimum).
+  const StructuralModel model = build_model(test::box_with_crossing_planes(5));
+  const ModelGeometry plain(model);
+  const ModelGeometry dense(model, std::vector<double>(model.vertices.size(), 3.0));
+  const std::vector<Vec3> seeds = sample_seeds(plain, 70, 4);
+  SeedEnergy ep(plain), ed(dense);
+  EnergyEvaluation x, y;
+  ep.evaluate(seeds, x);
+  ed.evaluate(seeds, y);
+  ASSERT_GT(x.boundary, 0.0);
+  EXPECT_NEAR(y.cvt, 3.0 * x.cvt, 1e-12 * y.cvt);
+  EXPECT_NEAR(y.boundary, 3.0 * x.boundary, 1e-12 * y.boundary);
+  for (size_t s = 0; s < seeds.size(); ++s)
+    EXPECT_LT((y.boundary_gradient[s] - 3.0 * x.boundary_gradient[s]).norm(), 1e-9 * (1.0 + y.boundary_gradient[s].norm()));
+}
+
 TEST(SeedEnergy, BoundaryGradientMatchesFiniteDifferencesOnAFreeBorder) {
   const StructuralModel model = build_model(test::flat_square(7));
   const ModelGeometry geometry(model);
