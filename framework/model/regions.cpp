@@ -30,42 +30,18 @@ void infer_regions(StructuralModel& model, const PartedTriangles& t) {
   UnionFind sides(2 * np);
   UnionFind components(np);  // parts linked through line edges
 
-  struct Around {
-    double angle;
-    int tri;
-    bool forward;  // the triangle traverses the edge a -> b
-  };
-  std::vector<Around> fan;
+  std::vector<FanBlade> fan;
   for (const EdgeTable::Edge& e : t.edges.edges) {
     if (!e.line) continue;
-    const Vec3& pa = model.vertices[e.a];
-    const Vec3 axis = (model.vertices[e.b] - pa).normalized();
-    // Orthonormal (u, v, axis), right-handed.
-    const Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    const Vec3 u = axis.cross(helper).normalized();
-    const Vec3 v = axis.cross(u);
-    fan.clear();
-    for (int i = e.first; i < e.first + e.count; ++i) {
-      const int f = t.edges.incident[i];
-      const Triangle& tri = t.triangles[f];
-      int c = tri[0];
-      for (int k : tri)
-        if (k != e.a && k != e.b) c = k;
-      const Vec3 w = model.vertices[c] - pa;
-      fan.push_back({std::atan2(w.dot(v), w.dot(u)), f, has_directed_edge(tri, e.a, e.b)});
-      components.unite(t.part[f], t.part[t.edges.incident[e.first]]);
-    }
-    std::sort(fan.begin(), fan.end(), [](const Around& x, const Around& y) {
-      return x.angle != y.angle ? x.angle < y.angle : x.tri < y.tri;
-    });
-    // A forward triangle's positive side faces increasing angles (its normal is axis x w).
+    radial_fan(model.vertices, t.triangles, e.a, e.b, &t.edges.incident[e.first], e.count, fan);
+    for (const FanBlade& blade : fan) components.unite(t.part[blade.triangle], t.part[t.edges.incident[e.first]]);
     // Across the wedge between fan[i] and fan[i+1], the side of fan[i] facing increasing
-    // angles meets the side of fan[i+1] facing decreasing angles.
+    // angles meets the side of fan[i+1] facing decreasing angles (radial_fan).
     const size_t n = fan.size();
     for (size_t i = 0; i < n; ++i) {
-      const Around& lo = fan[i];
-      const Around& hi = fan[(i + 1) % n];
-      sides.unite(side_node(t.part[lo.tri], lo.forward), side_node(t.part[hi.tri], !hi.forward));
+      const FanBlade& lo = fan[i];
+      const FanBlade& hi = fan[(i + 1) % n];
+      sides.unite(side_node(t.part[lo.triangle], lo.forward), side_node(t.part[hi.triangle], !hi.forward));
     }
   }
 

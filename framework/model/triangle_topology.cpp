@@ -1,6 +1,7 @@
 #include "framework/model/triangle_topology.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace voroseal {
@@ -42,6 +43,29 @@ int EdgeTable::find(int a, int b) const {
                              });
   if (it == edges.end() || it->a != a || it->b != b) return -1;
   return static_cast<int>(it - edges.begin());
+}
+
+void radial_fan(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, int a, int b,
+                const int* incident, int count, std::vector<FanBlade>& fan) {
+  const Vec3& pa = vertices[a];
+  const Vec3 axis = (vertices[b] - pa).normalized();
+  // Orthonormal (u, v, axis), right-handed.
+  const Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = axis.cross(helper).normalized();
+  const Vec3 v = axis.cross(u);
+  fan.clear();
+  for (int i = 0; i < count; ++i) {
+    const int f = incident[i];
+    const Triangle& tri = triangles[f];
+    int c = tri[0];
+    for (int k : tri)
+      if (k != a && k != b) c = k;
+    const Vec3 w = vertices[c] - pa;
+    fan.push_back({std::atan2(w.dot(v), w.dot(u)), f, has_directed_edge(tri, a, b)});
+  }
+  std::sort(fan.begin(), fan.end(), [](const FanBlade& x, const FanBlade& y) {
+    return x.angle != y.angle ? x.angle < y.angle : x.triangle < y.triangle;
+  });
 }
 
 }  // namespace voroseal

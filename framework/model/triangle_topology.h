@@ -25,6 +25,20 @@ struct EdgeTable {
   int find(int a, int b) const;
 };
 
+/// One triangle around an edge (a, b): the angle of its third vertex about the axis a -> b.
+struct FanBlade {
+  double angle;  // radians in (-pi, pi], right-handed about a -> b
+  int triangle;
+  bool forward;  // the triangle traverses the edge a -> b (its normal is axis x (apex - a))
+};
+
+/// The triangles incident[0, count) around edge (a, b), sorted by angle (ties by index), into
+/// `fan`. A forward triangle's positive side faces increasing angles, so the wedge between
+/// fan[i] and fan[i + 1] (the last one wrapping around to fan[0]) lies between the side of
+/// fan[i] facing increasing angles and the side of fan[i + 1] facing decreasing ones.
+void radial_fan(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, int a, int b,
+                const int* incident, int count, std::vector<FanBlade>& fan);
+
 /// True when triangle t traverses the directed edge a -> b.
 inline bool has_directed_edge(const Triangle& t, int a, int b) {
   return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);

@@ -30,12 +30,17 @@ class CheckModule : public Module {
                         "triangles with an angle below this (degrees) are warnings"};
     angle.min = 0;
     angle.max = 60;
+    ParameterSpec wedge{"min-wedge", ParameterType::Double, defaults.thin_wedge_warning_deg,
+                        "surfaces meeting at less than this (degrees) inside a region are warnings: "
+                        "the smallest dihedral angle a tet mesh keeping them can have"};
+    wedge.min = 0;
+    wedge.max = 90;
     ParameterSpec intersections{"intersections", ParameterType::Bool, true,
                                 "test triangle pairs for intersections, the most expensive check "
                                 "(--no-intersections skips it)"};
     ParameterSpec examples{"examples", ParameterType::Int, defaults.max_examples, "examples listed per failed check"};
     examples.min = 0;
-    return {json, short_edge, area, angle, intersections, examples};
+    return {json, short_edge, area, angle, wedge, intersections, examples};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -43,6 +48,7 @@ class CheckModule : public Module {
     options.short_edge_relative = parameters.get_double("short-edge");
     options.degenerate_area_relative = parameters.get_double("degenerate-area");
     options.min_angle_warning_deg = parameters.get_double("min-angle");
+    options.thin_wedge_warning_deg = parameters.get_double("min-wedge");
     options.intersections = parameters.get_bool("intersections");
     options.max_examples = static_cast<int>(parameters.get_int("examples"));
     ValidityReport report = check_model(*context.model, options);

@@ -16,6 +16,7 @@
 #include "framework/core/union_find.h"
 #include "framework/geometry/self_intersections.h"
 #include "framework/geometry/triangle_quality.h"
+#include "framework/model/contact_wedges.h"
 
 namespace voroseal {
 
@@ -134,6 +135,7 @@ class ValidityChecker {
       check_short_edges();
       check_self_intersections();
       check_small_angles();
+      check_thin_wedges();
       check_split_vertices();
       check_disconnected_surfaces();
       check_input_repairs();
@@ -867,6 +869,28 @@ class ValidityChecker {
                         : "no angle below " + number(o_.min_angle_warning_deg) + " deg";
   }
 
+  // ---- thin_wedges (warning): surfaces meeting at a few degrees inside a region; no tet
+  // mesh keeping them has a larger dihedral angle there (contact_wedges.h).
+  void check_thin_wedges() {
+    CheckEntry& c = add("thin_wedges", Severity::Warning);
+    const std::vector<ContactWedge> wedges = thin_contact_wedges(m_, o_.thin_wedge_warning_deg);
+    c.count = static_cast<long>(wedges.size());
+    for (const ContactWedge& w : wedges) {
+      if (!room(c)) break;
+      std::string what = "edge " + std::to_string(w.a) + "-" + std::to_string(w.b) + ": " + number(w.angle_deg) + " deg";
+      if (w.region >= 0) what += " in " + region_name(w.region);
+      c.examples.push_back({what, file(0.5 * (m_.vertices[w.a] + m_.vertices[w.b])),
+                            {part_name(w.lower_part), part_name(w.upper_part)}});
+    }
+    c.details = {{"angle_threshold_deg", o_.thin_wedge_warning_deg}};
+    if (!wedges.empty()) c.details["min_wedge_deg"] = wedges.front().angle_deg;
+    c.message = c.count ? plural(c.count, "contact edge") + " where surfaces meet at less than " +
+                              number(o_.thin_wedge_warning_deg) + " deg inside a region (thinnest " +
+                              number(wedges.front().angle_deg) +
+                              " deg): a tet mesh keeping these surfaces has a dihedral angle this small there"
+                        : "no surfaces meeting at less than " + number(o_.thin_wedge_warning_deg) + " deg";
+  }
+
   // ---- split_vertices (warning): a surface touching itself at a vertex.
   void check_split_vertices() {
     CheckEntry& c = add("split_vertices", Severity::Warning);
@@ -964,6 +988,7 @@ ValidityReport check_model(const StructuralModel& model, const CheckOptions& opt
   nonnegative(options.short_edge_relative, "short edge threshold");
   nonnegative(options.degenerate_area_relative, "degenerate area threshold");
   nonnegative(options.min_angle_warning_deg, "min angle warning");
+  nonnegative(options.thin_wedge_warning_deg, "thin wedge warning");
   nonnegative(options.colocated_relative, "colocated tolerance");
   nonnegative(options.volume_tolerance, "volume tolerance");
   if (options.max_examples < 0) throw ParameterError("check: max examples must be >= 0");

@@ -35,6 +35,9 @@
 //                               predicates; touching counts)
 //  W small_angles               triangles with an angle < min_angle_warning_deg (needles): legal
 //                               but bad for meshing; a remesher removes them
+//  W thin_wedges                contact edges where two surfaces meet at less than
+//                               thin_wedge_warning_deg inside a region (pinch-outs): any tet
+//                               mesh keeping the surfaces has a dihedral angle that small there
 //  W split_vertices             vertices where a surface touches itself, split in its mesh
 //  W disconnected_surfaces      surface parts in several pieces
 //  W input_repairs              triangles the builder dropped (degenerate, duplicated) or flipped
@@ -62,6 +65,8 @@ struct CheckOptions {
   double degenerate_area_relative = 1e-12;
   /// Triangles with an angle below this (degrees) are reported as warnings.
   double min_angle_warning_deg = 1.0;
+  /// Contact wedges thinner than this (degrees) inside a region are reported as warnings.
+  double thin_wedge_warning_deg = 5.0;
   /// Distinct vertices closer than this times the diagonal are colocated (welding tolerance).
   double colocated_relative = 1e-7;
   /// Relative tolerance on "region volumes add up".

@@ -3,17 +3,22 @@
 // context.volume and report["tetmesh"], and writes the mesh when an output is given.
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "framework/core/error.h"
+#include "framework/geometry/volume_quality.h"
 #include "framework/host/module.h"
 #include "framework/host/registry.h"
+#include "framework/model/contact_wedges.h"
 #include "io/model_io.h"
 #include "modules/tetmesh/tetrahedralize.h"
-#include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
 
 namespace {
+
+// Wedges between surfaces up to this angle are looked for (thinnest_wedge_deg).
+constexpr double kWedgeReportDeg = 30.0;
 
 class TetmeshModule : public Module {
  public:
@@ -96,6 +101,8 @@ class TetmeshModule : public Module {
                                     {"needle", group(run.slivers.needle)},
                                     {"surface", group(run.slivers.surface)},
                                     {"interior", group(run.slivers.interior)}};
+    // The thinnest wedge between surfaces inside a region: no mesh keeping them does better.
+    const std::vector<ContactWedge> wedges = thin_contact_wedges(model, kWedgeReportDeg);
     nlohmann::json report = {
         {"switches", run.switches},
         {"input", {{"points", run.input_points}, {"triangles", run.input_facets}, {"regions", model.regions.size()}}},
@@ -111,6 +118,7 @@ class TetmeshModule : public Module {
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
+        {"thinnest_wedge_deg", wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},
@@ -124,6 +132,17 @@ class TetmeshModule : public Module {
     context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
                      " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
                      std::to_string(quality.max_radius_edge));
+    if (!wedges.empty() && wedges.front().angle_deg < options.min_dihedral_deg) {
+      const ContactWedge& w = wedges.front();
+      const Vec3 at = 0.5 * (model.vertices[w.a] + model.vertices[w.b]) + model.frame.origin;
+      char where[160];
+      std::snprintf(where, sizeof where, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
+      context.log.info("tetmesh: surfaces " + model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name +
+                       " meet at " + std::to_string(w.angle_deg) + " deg" +
+                       (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
+                       ": no tet mesh keeping the surfaces has a larger minimum dihedral angle (`voroseal check` "
+                       "lists the thin wedges)");
+    }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");
       WriteOptions write;

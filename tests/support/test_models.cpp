@@ -1,5 +1,6 @@
 #include "tests/support/test_models.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -62,6 +63,22 @@ SurfaceSoup floating_fault(int n, double x0, double lo, double hi) {
       soup.triangles.push_back({id(j, k), id(j + 1, k + 1), id(j, k + 1)});
       soup.triangle_group.insert(soup.triangle_group.end(), 2, 0);
     }
+  return soup;
+}
+
+SurfaceSoup pinch_out_prism(double angle_deg) {
+  SurfaceSoup soup;
+  soup.source = "pinch_out_prism";
+  const double t = std::tan(angle_deg * M_PI / 180.0);
+  // 0, 1: the pinch-out line; 2, 3: bottom at x = 1; 4, 5: top at x = 1 (y = 0, then y = 1).
+  soup.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {1, 0, t}, {1, 1, t}};
+  soup.groups = {{"bottom", "bottom", SurfaceKind::Horizon, ""},
+                 {"top", "top", SurfaceKind::Horizon, ""},
+                 {"end", "end", SurfaceKind::Boundary, ""},
+                 {"south", "south", SurfaceKind::Boundary, ""},
+                 {"north", "north", SurfaceKind::Boundary, ""}};
+  soup.triangles = {{0, 3, 1}, {0, 2, 3}, {0, 1, 5}, {0, 5, 4}, {2, 5, 3}, {2, 4, 5}, {0, 4, 2}, {1, 3, 5}};
+  soup.triangle_group = {0, 0, 1, 1, 2, 2, 3, 4};
   return soup;
 }
 

@@ -17,6 +17,11 @@ SurfaceSoup lattice_box(int n, bool horizon, const Vec3& lo = Vec3(0, 0, 0), con
 /// free borders), as a separate soup to append.
 SurfaceSoup floating_fault(int n, double x0, double lo, double hi);
 
+/// One region shaped like a thin wedge: a bottom plate z = 0 and a top plate rising at
+/// `angle_deg` from the pinch-out line x = 0 (0 <= y <= 1), closed at x = 1 and y = 0, 1.
+/// The top and bottom meet inside the region at exactly angle_deg along the pinch-out.
+SurfaceSoup pinch_out_prism(double angle_deg);
+
 /// Appends b to a (points, triangles, groups).
 void append(SurfaceSoup& a, const SurfaceSoup& b);
 

@@ -43,7 +43,7 @@ TEST(CheckModel, SealedBoxesAreValid) {
     EXPECT_EQ(entry(r, "finite_extension").details["boundary_components"], 1);
     EXPECT_EQ(entry(r, "region_orientation").details["volumes_add_up"], true);
     // All the checks of the header ran.
-    EXPECT_EQ(r.checks.size(), 20u);
+    EXPECT_EQ(r.checks.size(), 21u);
   }
 }
 
@@ -154,6 +154,22 @@ TEST(CheckModel, SurfaceTouchingItselfWithTwoCopiesIsACrack) {
   EXPECT_TRUE(entry(r, "cracks").passed());
   EXPECT_EQ(entry(r, "split_vertices").count, 1);
   EXPECT_EQ(entry(r, "disconnected_surfaces").count, 1);
+}
+
+TEST(CheckModel, ThinWedgesAreWarningsWithTheirAngle) {
+  const ValidityReport r = check_model(build_model(test::pinch_out_prism(3.0)));
+  const CheckEntry& wedges = entry(r, "thin_wedges");
+  EXPECT_EQ(wedges.severity, Severity::Warning);
+  EXPECT_EQ(wedges.count, 1);
+  EXPECT_NEAR(wedges.details["min_wedge_deg"].get<double>(), 3.0, 1e-9);
+  ASSERT_EQ(wedges.examples.size(), 1u);
+  EXPECT_NEAR(wedges.examples[0].location[1], 0.5, 1e-12);  // middle of the pinch-out line
+  EXPECT_TRUE(r.valid());
+  // A lower threshold lets it pass; a box has none.
+  CheckOptions lower;
+  lower.thin_wedge_warning_deg = 2.0;
+  EXPECT_TRUE(entry(check_model(build_model(test::pinch_out_prism(3.0)), lower), "thin_wedges").passed());
+  EXPECT_TRUE(entry(check_model(build_model(test::lattice_box(4, true))), "thin_wedges").passed());
 }
 
 TEST(CheckModel, FlippedRegionSignsAreOrientationErrors) {

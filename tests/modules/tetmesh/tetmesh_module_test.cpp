@@ -34,6 +34,25 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
   EXPECT_FALSE(report.contains("output"));
 }
 
+TEST(TetmeshModule, NoTetIsFlatterThanTheThinnestWedgeItReports) {
+  // A pinch-out at 3 degrees: the tets on the pinch-out line share its 3 degrees.
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
+  context.model = std::make_shared<StructuralModel>(build_model(test::pinch_out_prism(3.0)));
+  module.run(context, Parameters(module.parameters(), {}));
+  const auto& report = context.report.at("tetmesh");
+  ASSERT_TRUE(report.at("thinnest_wedge_deg").is_number());
+  EXPECT_NEAR(report.at("thinnest_wedge_deg").get<double>(), 3.0, 1e-9);
+  EXPECT_EQ(report.at("nonconforming_triangles"), 0);
+  EXPECT_LE(report.at("min_dihedral_deg").get<double>(), 3.0 + 1e-9);
+  EXPECT_GT(report.at("min_dihedral_deg").get<double>(), 0.0);
+  // A box cut by a horizon has no wedge under 30 degrees.
+  context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
+  module.run(context, Parameters(module.parameters(), {}));
+  EXPECT_TRUE(context.report.at("tetmesh").at("thinnest_wedge_deg").is_null());
+}
+
 TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
   test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
   const Module& module = harness.module;
