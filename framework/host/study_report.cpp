@@ -128,8 +128,8 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 // input features have no counterpart (all / larger than a Voronoi cell), how many pockets are
 // left (output regions that are no input region) and how many were opened again.
 const std::vector<std::string> kStepColumns = {
-    "tets", "min_dihedral_deg", "thinnest_wedge_deg", "regions_preserved", "features_lost", "features_lost_larger_than_cell",
-    "pockets", "pockets_opened"};
+    "tets", "min_dihedral_deg", "thinnest_wedge_deg", "regions_preserved", "features_lost",
+    "features_lost_larger_than_cell", "pockets", "pockets_opened"};
 
 // An inline SVG bar chart of a histogram.
 std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,

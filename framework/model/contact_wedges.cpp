@@ -19,8 +19,9 @@ std::vector<ContactWedge> thin_contact_wedges(const StructuralModel& model, doub
     for (size_t k = 0; k + 1 < line.size(); ++k) {
       const int a = std::min(line[k], line[k + 1]), b = std::max(line[k], line[k + 1]);
       const int e = edges.find(a, b);
-      if (e < 0 || edges.edges[e].count < 2) continue;
-      radial_fan(model.vertices, flat.triangles, a, b, &edges.incident[edges.edges[e].first], edges.edges[e].count, fan);
+      if (e < 0 || edges.edges[e].count < 2) continue;  // a free border: no wedge
+      const EdgeTable::Edge& edge = edges.edges[e];
+      radial_fan(model.vertices, flat.triangles, a, b, &edges.incident[edge.first], edge.count, fan);
       const size_t n = fan.size();
       for (size_t i = 0; i < n; ++i) {
         const FanBlade& lo = fan[i];

@@ -877,7 +877,8 @@ class ValidityChecker {
     c.count = static_cast<long>(wedges.size());
     for (const ContactWedge& w : wedges) {
       if (!room(c)) break;
-      std::string what = "edge " + std::to_string(w.a) + "-" + std::to_string(w.b) + ": " + number(w.angle_deg) + " deg";
+      std::string what =
+          "edge " + std::to_string(w.a) + "-" + std::to_string(w.b) + ": " + number(w.angle_deg) + " deg";
       if (w.region >= 0) what += " in " + region_name(w.region);
       c.examples.push_back({what, file(0.5 * (m_.vertices[w.a] + m_.vertices[w.b])),
                             {part_name(w.lower_part), part_name(w.upper_part)}});

@@ -137,8 +137,8 @@ class TetmeshModule : public Module {
       const Vec3 at = 0.5 * (model.vertices[w.a] + model.vertices[w.b]) + model.frame.origin;
       char where[160];
       std::snprintf(where, sizeof where, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
-      context.log.info("tetmesh: surfaces " + model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name +
-                       " meet at " + std::to_string(w.angle_deg) + " deg" +
+      const std::string pair = model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name;
+      context.log.info("tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
                        (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
                        ": no tet mesh keeping the surfaces has a larger minimum dihedral angle (`voroseal check` "
                        "lists the thin wedges)");

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
+#include <vector>
 
 #include "framework/model/contact_wedges.h"
 #include "framework/model/model_builder.h"

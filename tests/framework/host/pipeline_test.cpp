@@ -296,8 +296,8 @@ TEST(RunStudy, FailedRunsAreRecordedAndTheStudyGoesOn) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
   EXPECT_EQ(csv.rfind("run,model,key,fail,status,vertices,triangles,surfaces,contacts,corners,regions,min_angle_deg,"
                       "pct_triangles_angle_below_30,avg_quality,min_quality,area,bbox_diagonal,hausdorff_pct,tets,"
-                      "min_dihedral_deg,thinnest_wedge_deg,regions_preserved,features_lost,features_lost_larger_than_cell,pockets,"
-                      "pockets_opened,time_read_s,"
+                      "min_dihedral_deg,thinnest_wedge_deg,regions_preserved,features_lost,"
+                      "features_lost_larger_than_cell,pockets,pockets_opened,time_read_s,"
                       "time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
                       "time_total_s,error\n",
                       0),

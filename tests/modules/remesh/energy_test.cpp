@@ -175,7 +175,8 @@ TEST(SeedEnergy, AConstantDensityScalesBothEnergiesAlike) {
   EXPECT_NEAR(y.cvt, 3.0 * x.cvt, 1e-12 * y.cvt);
   EXPECT_NEAR(y.boundary, 3.0 * x.boundary, 1e-12 * y.boundary);
   for (size_t s = 0; s < seeds.size(); ++s)
-    EXPECT_LT((y.boundary_gradient[s] - 3.0 * x.boundary_gradient[s]).norm(), 1e-9 * (1.0 + y.boundary_gradient[s].norm()));
+    EXPECT_LT((y.boundary_gradient[s] - 3.0 * x.boundary_gradient[s]).norm(),
+              1e-9 * (1.0 + y.boundary_gradient[s].norm()));
 }
 
 TEST(SeedEnergy, BoundaryGradientMatchesFiniteDifferencesOnAFreeBorder) {
