@@ -24,10 +24,10 @@ std::vector<ContactWedge> thin_contact_wedges(const StructuralModel& model, doub
       radial_fan(model.vertices, flat.triangles, a, b, &edges.incident[edge.first], edge.count, fan);
       const size_t n = fan.size();
       for (size_t i = 0; i < n; ++i) {
+        const double gap = wedge_after(fan, i);
+        if (!(gap < max_rad)) continue;
         const FanBlade& lo = fan[i];
         const FanBlade& hi = fan[(i + 1) % n];
-        const double gap = i + 1 < n ? hi.angle - lo.angle : hi.angle + 2.0 * M_PI - lo.angle;
-        if (!(gap < max_rad)) continue;
         const int part = flat.part[lo.triangle];
         const int region = lo.forward ? sides[part].first : sides[part].second;
         if (region == -1) continue;

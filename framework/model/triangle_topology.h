@@ -3,6 +3,7 @@
 // with other than two incident triangles, or two triangles of different surface parts).
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "framework/core/types.h"
@@ -38,6 +39,11 @@ struct FanBlade {
 /// fan[i] facing increasing angles and the side of fan[i + 1] facing decreasing ones.
 void radial_fan(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, int a, int b,
                 const int* incident, int count, std::vector<FanBlade>& fan);
+
+/// Angle (radians) of the wedge between fan[i] and the next blade, the last one wrapping around.
+inline double wedge_after(const std::vector<FanBlade>& fan, size_t i) {
+  return i + 1 < fan.size() ? fan[i + 1].angle - fan[i].angle : fan[0].angle + 2.0 * M_PI - fan[i].angle;
+}
 
 /// True when triangle t traverses the directed edge a -> b.
 inline bool has_directed_edge(const Triangle& t, int a, int b) {

@@ -215,33 +215,15 @@ class Editor {
     return n;
   }
 
-  // A triangle around an edge: its angle about the edge, and whether it runs along a -> b.
-  struct Blade {
-    double angle;
-    int triangle;
-    bool forward;
-  };
-  // The triangles `tris` of edge (a, b) in radial order (angles about the edge from a fixed
-  // direction, increasing); false, `fan` empty, when the edge or a triangle is degenerate.
-  bool radial_order(int a, int b, const std::vector<int>& tris, std::vector<Blade>& fan) const {
+  // The triangles `tris` of edge (a, b) in radial order (radial_fan()); false, `fan` empty,
+  // when the edge or a triangle is degenerate (an apex on the edge's line has no angle).
+  bool radial_order(int a, int b, const std::vector<int>& tris, std::vector<FanBlade>& fan) const {
     fan.clear();
     const Vec3 axis = p(b) - p(a);
     if (axis.squaredNorm() == 0) return false;
-    const Vec3 n = axis.normalized();
-    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    const Vec3 u = n.cross(helper).normalized();
-    const Vec3 v = n.cross(u);
-    for (int t : tris) {
-      const Triangle& f = s_.triangles[t];
-      Vec3 w = p(opposite(f, a, b)) - p(a);
-      w -= w.dot(n) * n;
-      if (w.squaredNorm() == 0) {
-        fan.clear();
-        return false;
-      }
-      fan.push_back({std::atan2(w.dot(v), w.dot(u)), t, has_directed_edge(f, a, b)});
-    }
-    std::sort(fan.begin(), fan.end(), [](const Blade& x, const Blade& y) { return x.angle < y.angle; });
+    for (int t : tris)
+      if (axis.cross(p(opposite(s_.triangles[t], a, b)) - p(a)).squaredNorm() == 0) return false;
+    radial_fan(s_.vertices, s_.triangles, a, b, tris.data(), static_cast<int>(tris.size()), fan);
     return true;
   }
 
@@ -682,10 +664,9 @@ class Editor {
     if (!radial_order(a, b, fan_tris_, fan_)) return;  // degenerate triangles, counted there
     const double fold = kFoldDeg * M_PI / 180.0;
     for (size_t i = 0; i < k; ++i) {
-      const Blade& lo = fan_[i];
-      const Blade& hi = fan_[(i + 1) % k];
-      const double wedge = i + 1 < k ? hi.angle - lo.angle : hi.angle + 2.0 * M_PI - lo.angle;
-      if (wedge < fold) ++out.folds;
+      const FanBlade& lo = fan_[i];
+      const FanBlade& hi = fan_[(i + 1) % k];
+      if (wedge_after(fan_, i) < fold) ++out.folds;
       const auto& rl = part_regions_[s_.triangle_part[lo.triangle]];
       const auto& rh = part_regions_[s_.triangle_part[hi.triangle]];
       // The side of `lo` facing increasing angles, the side of `hi` facing decreasing ones.
@@ -703,7 +684,7 @@ class Editor {
   int epoch_ = 0, query_epoch_ = 0;
   std::vector<std::pair<int, int>> edges_;
   std::vector<int> fan_tris_, verts_, ring_;
-  std::vector<Blade> fan_;
+  std::vector<FanBlade> fan_;
   std::vector<std::pair<int, int>> fan_count_;
 };
 
@@ -1614,16 +1595,15 @@ void thin_wedges(Editor& e, int a, int b, std::vector<std::pair<int, int>>& out)
   out.clear();
   std::vector<int> tris;
   e.edge_triangles(a, b, tris);
-  std::vector<Editor::Blade> fan;
+  std::vector<FanBlade> fan;
   if (tris.size() < 2 || !e.radial_order(a, b, tris, fan)) return;
   const double thin = kThinWedgeDeg * M_PI / 180.0;
   for (size_t i = 0; i < fan.size(); ++i) {
-    const Editor::Blade& lo = fan[i];
-    const Editor::Blade& hi = fan[(i + 1) % fan.size()];
-    const double gap = i + 1 < fan.size() ? hi.angle - lo.angle : hi.angle + 2.0 * M_PI - lo.angle;
+    const FanBlade& lo = fan[i];
+    const FanBlade& hi = fan[(i + 1) % fan.size()];
     const int c1 = Editor::opposite(e.s_.triangles[lo.triangle], a, b);
     const int c2 = Editor::opposite(e.s_.triangles[hi.triangle], a, b);
-    if (gap < thin && c1 != c2) out.push_back({c1, c2});
+    if (wedge_after(fan, i) < thin && c1 != c2) out.push_back({c1, c2});
   }
 }
 
