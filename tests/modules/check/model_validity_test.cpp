@@ -170,6 +170,10 @@ TEST(CheckModel, ThinWedgesAreWarningsWithTheirAngle) {
   lower.thin_wedge_warning_deg = 2.0;
   EXPECT_TRUE(entry(check_model(build_model(test::pinch_out_prism(3.0)), lower), "thin_wedges").passed());
   EXPECT_TRUE(entry(check_model(build_model(test::lattice_box(4, true))), "thin_wedges").passed());
+  // A negative threshold is a parameter error, not a check that passes.
+  CheckOptions negative;
+  negative.thin_wedge_warning_deg = -1.0;
+  EXPECT_THROW(check_model(build_model(test::pinch_out_prism(3.0)), negative), ParameterError);
 }
 
 TEST(CheckModel, FlippedRegionSignsAreOrientationErrors) {
