@@ -1866,25 +1866,40 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
   return splits;
 }
 
-// Squared distance from p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
-double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+// The point of triangle (a, b, c) closest to p, as barycentric weights of a, b and c (Ericson,
+// Real-Time Collision Detection 5.1.5).
+Vec3 closest_weights(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return ap.squaredNorm();
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
   const Vec3 bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).squaredNorm();
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double s = d1 / (d1 - d3);
+    return {1 - s, s, 0};
+  }
   const Vec3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).squaredNorm();
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double s = d2 / (d2 - d6);
+    return {1 - s, 0, s};
+  }
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).squaredNorm();
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+    const double s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - s, s};
+  }
   const double denom = 1.0 / (va + vb + vc);
-  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).squaredNorm();
+  return {1 - (vb + vc) * denom, vb * denom, vc * denom};
+}
+
+double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 w = closest_weights(p, a, b, c);
+  return (p - (w[0] * a + w[1] * b + w[2] * c)).squaredNorm();
 }
 
 // The other half of the fidelity check: input vertices inside a part (a fold, a bump between the
@@ -1945,6 +1960,182 @@ int refine_toward_input(Editor& e, double tolerance) {
     }
   }
   return inserted;
+}
+
+// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it over
+// a whole edge, and any tet mesh keeping the surfaces fills the gap with tets about as flat as
+// the wedge (remeshed CloudSpin_fixed at 10,000 seeds: a fault tip 19 m from the next fault at
+// the end of a 362 m edge, a 1.9 deg tet). Closer than d_min, the tip joins the part (paper
+// Fig. 11c-d, a fault tip joins the fault next to it): a free border vertex v next to a vertex a
+// of the part, with the edge (a, v) leaving the part at less than `max_wedge_deg`, moves to the
+// closest point of the part's triangles around a or next to them and is inserted there (pinned),
+// and (a, v) becomes a contact edge, made in the part by a flip when v landed next to a's
+// triangles. A join may bring the next border vertex in. It is refused when it leaves a needle
+// or a wedge thinner than `max_wedge_deg` at the new contact edge, and when v would keep no free
+// edge toward a vertex off the part: a free border never closes entirely (that might cut a
+// region in two) and never lies along the part with both ends on it (a gap of no thickness).
+int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report) {
+  constexpr double kJoinFloorDeg = 10.0;
+  if (min_feature <= 0.0 || max_wedge_deg <= 0.0) return 0;
+  const double max_wedge = max_wedge_deg * M_PI / 180.0, tan_wedge = std::tan(max_wedge);
+  std::vector<FanBlade> fan;
+  auto on_free_border = [&](int v) {
+    const VertexFeature& f = e.s_.features[v];
+    return f.kind == VertexFeature::Contact && e.input_.contacts[f.id].is_free_border();
+  };
+  std::vector<std::pair<int, int>> border;  // border edges (a, v), both ways
+  std::vector<int> edge;
+  auto collect = [&]() {
+    border.clear();
+    for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+      if (!e.alive(static_cast<int>(ti))) continue;
+      const Triangle& f = e.s_.triangles[ti];
+      for (int i = 0; i < 3; ++i) {
+        const int a = f[i], v = f[(i + 1) % 3];
+        e.edge_triangles(a, v, edge);
+        if (edge.size() != 1) continue;
+        border.emplace_back(a, v);
+        border.emplace_back(v, a);
+      }
+    }
+  };
+  auto on_part = [&](int w, int part) {
+    for (int t : e.star(w))
+      if (e.s_.triangle_part[t] == part) return true;
+    return false;
+  };
+  // Whether v keeps a free edge other than (a, v) whose other end is off `part`: joins then
+  // leave every free border an edge apart from the part, so that the region around it stays
+  // one (and no free edge lies along the part with both ends on it, a gap of no thickness).
+  auto keeps_free_edge = [&](int a, int v, int part) {
+    for (int t : e.star(v))
+      for (int w : e.s_.triangles[t]) {
+        if (w == v || w == a || on_part(w, part)) continue;
+        e.edge_triangles(v, w, edge);
+        if (edge.size() == 1) return true;
+      }
+    return false;
+  };
+  collect();
+  int joined = 0;
+  std::vector<int> candidates, before;
+  std::vector<char> joined_already(e.s_.vertices.size(), 0);
+  for (bool again = true; again;) {
+    again = false;
+    for (const auto& [a, v] : border) {
+      if (!on_free_border(v) || joined_already[v]) continue;
+      e.edge_triangles(a, v, edge);
+      if (edge.size() != 1) continue;  // joined meanwhile
+      const int own_part = e.s_.triangle_part[edge[0]];
+      // The triangles around a of the parts v is not on, and their neighbours across the edge
+      // opposite a.
+      candidates.clear();
+      for (int t : e.star(a)) {
+        const int part = e.s_.triangle_part[t];
+        if (part == own_part || on_part(v, part)) continue;
+        candidates.push_back(t);
+        const Triangle& f = e.s_.triangles[t];
+        const int b = f[0] == a ? f[1] : f[1] == a ? f[2] : f[0], c = Editor::opposite(f, a, b);
+        e.edge_triangles(b, c, edge);
+        if (edge.size() == 2 && e.s_.triangle_part[edge[0]] == part && e.s_.triangle_part[edge[1]] == part)
+          candidates.push_back(edge[0] == t ? edge[1] : edge[0]);
+      }
+      int best = -1;
+      Vec3 weights = Vec3::Zero();
+      double best_d2 = std::numeric_limits<double>::infinity();
+      for (int t : candidates) {
+        const Triangle& f = e.s_.triangles[t];
+        const Vec3 w = closest_weights(e.p(v), e.p(f[0]), e.p(f[1]), e.p(f[2]));
+        const double d2 = (e.p(v) - (w[0] * e.p(f[0]) + w[1] * e.p(f[1]) + w[2] * e.p(f[2]))).squaredNorm();
+        if (d2 < best_d2) {
+          best_d2 = d2;
+          best = t;
+          weights = w;
+        }
+      }
+      const double d = std::sqrt(best_d2);
+      if (best < 0 || d >= min_feature || d >= tan_wedge * (e.p(v) - e.p(a)).norm()) continue;
+      // Into the triangle, or onto an edge of it when the point is that close to it (a sliver
+      // otherwise); not next to a vertex (v would land on it) nor on a contact of the part.
+      const Triangle f = e.s_.triangles[best];
+      constexpr double kEdgeWeight = 0.1;
+      int near_edges = 0, opposite = -1;
+      for (int i = 0; i < 3; ++i)
+        if (weights[i] < kEdgeWeight) {
+          ++near_edges;
+          opposite = i;
+        }
+      if (near_edges > 1) continue;
+      int p = -1, q = -1;  // the edge v lands on
+      Vec3 x = weights[0] * e.p(f[0]) + weights[1] * e.p(f[1]) + weights[2] * e.p(f[2]);
+      if (near_edges == 1) {
+        p = f[(opposite + 1) % 3];
+        q = f[(opposite + 2) % 3];
+        if (e.is_line_edge(p, q)) continue;
+        const Vec3 pq = e.p(q) - e.p(p);
+        x = e.p(p) + std::clamp((e.p(v) - e.p(p)).dot(pq) / pq.squaredNorm(), 0.0, 1.0) * pq;
+      }
+      const int part = e.s_.triangle_part[best];
+      if (!keeps_free_edge(a, v, part)) continue;
+      std::vector<int> touched{a, v, f[0], f[1], f[2]};
+      e.stars(touched, before);
+      double own_floor = kJoinFloorDeg;
+      for (int t : e.star(v)) own_floor = std::min(own_floor, e.min_angle(t));
+      const bool done = transact(e, before, false, [&](std::vector<int>& after) {
+        e.move(v, x);
+        if (p >= 0) {
+          split(e, p, q, v);
+        } else {
+          e.kill(best);
+          for (int i = 0; i < 3; ++i) e.add_triangle({f[i], f[(i + 1) % 3], v}, part);
+        }
+        e.edge_triangles(a, v, edge);
+        if (std::none_of(edge.begin(), edge.end(), [&](int t) { return e.s_.triangle_part[t] == part; })) {
+          // v landed next to a's triangles: flip the edge (y, z) between (a, y, z) and (z, y, v).
+          int t1 = -1, t2 = -1;
+          for (int t : e.star(a)) {
+            if (e.s_.triangle_part[t] != part) continue;
+            const Triangle& g = e.s_.triangles[t];
+            const int k = g[0] == a ? 0 : g[1] == a ? 1 : 2;
+            e.edge_triangles(g[(k + 2) % 3], g[(k + 1) % 3], edge);
+            for (int o : edge)
+              if (o != t && e.s_.triangle_part[o] == part && Editor::has(e.s_.triangles[o], v)) t1 = t, t2 = o;
+          }
+          if (t1 < 0) return false;
+          const Triangle g = e.s_.triangles[t1];
+          const int k = g[0] == a ? 0 : g[1] == a ? 1 : 2;
+          const int y = g[(k + 1) % 3], z = g[(k + 2) % 3];
+          e.kill(t1);
+          e.kill(t2);
+          e.add_triangle({a, y, v}, part);
+          e.add_triangle({a, v, z}, part);
+          touched.push_back(y);
+          touched.push_back(z);
+        }
+        // No needle: the part's new triangles have no angle below kJoinFloorDeg, v's own no
+        // smaller one than before.
+        for (int t : e.star(v))
+          if (e.min_angle(t) < (e.s_.triangle_part[t] == part ? kJoinFloorDeg : own_floor)) return false;
+        // The part must leave the new contact at more than the wedge (a tip lying along the part,
+        // its own part close over a band, gains nothing from joining).
+        e.edge_triangles(a, v, edge);
+        if (!e.radial_order(a, v, edge, fan)) return false;
+        for (size_t i = 0; i < fan.size(); ++i)
+          if (wedge_after(fan, i) < max_wedge) return false;
+        e.stars(touched, after);
+        return true;
+      });
+      if (!done) continue;
+      e.s_.features[v].pinned = true;
+      joined_already[v] = 1;
+      report.merges.push_back(
+          {FeatureMerge::CloseFeatures, -1, e.p(v), {e.s_.features[v], {VertexFeature::Surface, part}}});
+      ++joined;
+      again = true;
+    }
+    if (again) collect();
+  }
+  return joined;
 }
 
 // Makes edge (a, b) in a part where a and b are the far corners of two adjacent triangles, by
@@ -2177,6 +2368,9 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     if (moved == 0) break;
   }
   if (options.resolve_intersections) repair(e, projector, options, report);
+  // Last, as the repair may need to move a tip.
+  report.tips_joined = join_close_tips(e, options.min_feature, options.wedge_dihedral_deg, report);
+  if (report.tips_joined > 0) report.flips += flip_edges(e, options.flip_flatness_deg);
   // The edits since (the repairs included) may have closed new fans of three; flips that make
   // nothing worse.
   report.valence3_raised += raise_valence3_on_contacts(e);

@@ -38,7 +38,9 @@ struct CleanupOptions {
   double quality_below = 0.9;
   /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
   /// holds the tetrahedron of the contact edge and the two apexes: their vertices move to make
-  /// those tets' smallest dihedral angle at least this (degrees) where they can. 0 disables it.
+  /// those tets' smallest dihedral angle at least this (degrees) where they can. A free border
+  /// (fault tip) leaving a part at a wedge thinner than this, closer than min_feature, joins the
+  /// part. 0 disables both.
   double wedge_dihedral_deg = 8.0;
 };
 
@@ -48,6 +50,7 @@ struct CleanupReport {
   int needles_collapsed = 0;
   int quality_moves = 0;      // vertex moves of the quality passes
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
+  int tips_joined = 0;        // free border vertices joined to the part they nearly touch
   int flips = 0;
   int smoothing_passes = 0;
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed

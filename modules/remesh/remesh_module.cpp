@@ -172,6 +172,7 @@ class RemeshModule final : public Module {
                          {"needles_collapsed", result.cleanup.needles_collapsed},
                          {"quality_moves", result.cleanup.quality_moves},
                          {"wedge_moves", result.cleanup.wedge_moves},
+                         {"tips_joined", result.cleanup.tips_joined},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},

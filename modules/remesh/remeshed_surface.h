@@ -14,7 +14,7 @@ struct VertexFeature {
   enum Kind : uint8_t { Surface = 0, Contact = 1, Corner = 2 };
   Kind kind = Surface;
   int id = -1;          // input surface part, contact or corner
-  bool pinned = false;  // a contact vertex held at a sharp bend of its contact (never moved)
+  bool pinned = false;  // never moved: held at a sharp bend of its contact, or a fault tip joined to a part
 };
 
 struct RemeshedSurface {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
@@ -396,6 +397,129 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
   EXPECT_GT(after, forced_wedge_dihedral(plain, 0, 1) + 1.0);
   EXPECT_GT(after, 5.5);
   EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left, 0);
+}
+
+// A horizon (z = 0, unit square) and a fault dipping at 60 deg that rests on it along
+// x in [0, 0.5] (a contact) and then rises off it at `angle_deg` to x = 1: its free border
+// (the fault tip) runs a little above the horizon.
+StructuralModel fault_tip_over_horizon(double angle_deg) {
+  const int n = 8, rows = 4;
+  SurfaceSoup soup;
+  soup.source = "fault_tip_over_horizon";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) soup.points.push_back({i * 1.0 / n, j * 1.0 / n, 0.0});
+  auto h = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      soup.triangles.push_back({h(i, j), h(i + 1, j), h(i + 1, j + 1)});
+      soup.triangles.push_back({h(i, j), h(i + 1, j + 1), h(i, j + 1)});
+      soup.triangle_group.insert(soup.triangle_group.end(), 2, 0);
+    }
+  // The fault's columns off the contact sit between the horizon's, so that its tip is over the
+  // middle of horizon edges and triangles, not over their vertices.
+  const std::vector<double> xs = {0.0, 0.125, 0.25, 0.375, 0.5, 0.57, 0.69, 0.81, 0.93};
+  const double rise = std::tan(angle_deg * M_PI / 180.0), run = 1.0 / std::tan(60.0 * M_PI / 180.0);
+  std::vector<int> f((xs.size()) * (rows + 1));
+  auto fid = [&](int i, int k) -> int& { return f[k * xs.size() + i]; };
+  for (int k = 0; k <= rows; ++k)
+    for (size_t i = 0; i < xs.size(); ++i) {
+      const double bottom = std::max(0.0, xs[i] - 0.5) * rise, z = bottom + (0.5 - bottom) * k / rows;
+      if (k == 0 && xs[i] <= 0.5) {
+        fid(i, k) = h(static_cast<int>(std::lround(xs[i] * n)), n / 2);
+        continue;
+      }
+      fid(i, k) = static_cast<int>(soup.points.size());
+      soup.points.push_back({xs[i], 0.5 + z * run, z});
+    }
+  for (int k = 0; k < rows; ++k)
+    for (size_t i = 0; i + 1 < xs.size(); ++i) {
+      soup.triangles.push_back({fid(i, k), fid(i + 1, k), fid(i + 1, k + 1)});
+      soup.triangles.push_back({fid(i, k), fid(i + 1, k + 1), fid(i, k + 1)});
+      soup.triangle_group.insert(soup.triangle_group.end(), 2, 1);
+    }
+  soup.groups = {{"horizon", "horizon", SurfaceKind::Horizon, ""}, {"fault", "fault", SurfaceKind::Fault, ""}};
+  return build_model(soup);
+}
+
+// Edges of `part` with one triangle (free border edges), as vertex pairs.
+std::vector<std::pair<int, int>> free_edges(const RemeshedSurface& s, int part) {
+  std::map<std::pair<int, int>, int> count;
+  for (size_t t = 0; t < s.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = s.triangles[t][i], b = s.triangles[t][(i + 1) % 3];
+      ++count[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::pair<int, int>> out;
+  for (size_t t = 0; t < s.triangles.size(); ++t) {
+    if (s.triangle_part[t] != part) continue;
+    for (int i = 0; i < 3; ++i) {
+      const int a = s.triangles[t][i], b = s.triangles[t][(i + 1) % 3];
+      if (count[{std::min(a, b), std::max(a, b)}] == 1) out.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  return out;
+}
+
+TEST(MeshCleanup, AFaultTipCloserThanTheMinimumFeatureJoinsThePartItNearlyTouches) {
+  const StructuralModel input = fault_tip_over_horizon(3.0);
+  ASSERT_EQ(input.parts.size(), 2u);
+  const int horizon = input.parts[0].name == "horizon" ? 0 : 1, fault = 1 - horizon;
+  const SurfaceProjector projector(input);
+  const RemeshedSurface given = as_remeshed(input);
+  // The tip's vertices off the contact, 0.004 to 0.023 above the horizon.
+  std::vector<int> tip;
+  for (size_t v = 0; v < given.vertices.size(); ++v) {
+    const Vec3 x = given.vertices[v] + input.frame.origin;
+    if (x.z() > 1e-9 && x.z() < 0.03) tip.push_back(static_cast<int>(v));
+  }
+  ASSERT_EQ(tip.size(), 4u);
+
+  CleanupOptions options;
+  options.min_feature = 0.05;
+  RemeshedSurface joined = given;
+  const CleanupReport report = clean_up(joined, input, projector, options);
+  EXPECT_GE(report.tips_joined, 2);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left +
+                report.degenerate_left + report.pinches_left,
+            0);
+  // The joined vertices (pinned; vertices are renumbered by the clean-up) lie on the horizon,
+  // in triangles of both parts.
+  int pinned = 0;
+  for (size_t v = 0; v < joined.vertices.size(); ++v) {
+    if (!joined.features[v].pinned) continue;
+    ++pinned;
+    EXPECT_LT(projector.distance_to_part(horizon, joined.vertices[v]), 1e-9);
+    std::set<int> parts;
+    for (size_t t = 0; t < joined.triangles.size(); ++t)
+      for (int w : joined.triangles[t])
+        if (w == static_cast<int>(v)) parts.insert(joined.triangle_part[t]);
+    EXPECT_EQ(parts.size(), 2u);
+  }
+  EXPECT_EQ(pinned, report.tips_joined);
+  // Each join is listed, with the part joined.
+  int listed = 0;
+  for (const FeatureMerge& m : report.merges)
+    for (const VertexFeature& f : m.features) listed += f.kind == VertexFeature::Surface && f.id == horizon ? 1 : 0;
+  EXPECT_EQ(listed, report.tips_joined);
+  // The fault keeps a free edge off the horizon (the tip never closes entirely), and none of its
+  // free edges lies on the horizon with both ends.
+  int off = 0;
+  for (const auto& [a, b] : free_edges(joined, fault)) {
+    const bool a_on = projector.distance_to_part(horizon, joined.vertices[a]) < 1e-9,
+               b_on = projector.distance_to_part(horizon, joined.vertices[b]) < 1e-9;
+    EXPECT_FALSE(a_on && b_on) << a << " " << b;
+    off += a_on && b_on ? 0 : 1;
+  }
+  EXPECT_GT(off, 0);
+
+  // Without d_min, or with a tip leaving the horizon at 20 degrees (wider than the wedge bound),
+  // nothing joins.
+  RemeshedSurface kept = given;
+  EXPECT_EQ(clean_up(kept, input, projector).tips_joined, 0);
+  const StructuralModel steep = fault_tip_over_horizon(20.0);
+  const SurfaceProjector steep_projector(steep);
+  RemeshedSurface steep_kept = as_remeshed(steep);
+  EXPECT_EQ(clean_up(steep_kept, steep, steep_projector, options).tips_joined, 0);
 }
 
 }  // namespace
