@@ -1962,26 +1962,62 @@ int refine_toward_input(Editor& e, double tolerance) {
   return inserted;
 }
 
-// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it over
-// a whole edge, and any tet mesh keeping the surfaces fills the gap with tets about as flat as
-// the wedge (remeshed CloudSpin_fixed at 10,000 seeds: a fault tip 19 m from the next fault at
-// the end of a 362 m edge, a 1.9 deg tet). Closer than d_min, the tip joins the part (paper
-// Fig. 11c-d, a fault tip joins the fault next to it): a free border vertex v next to a vertex a
-// of the part, with the edge (a, v) leaving the part at less than `max_wedge_deg`, moves to the
-// closest point of the part's triangles around a or next to them and is inserted there (pinned),
-// and (a, v) becomes a contact edge, made in the part by a flip when v landed next to a's
-// triangles. A join may bring the next border vertex in. It is refused when it leaves a needle
-// or a wedge thinner than `max_wedge_deg` at the new contact edge, and when v would keep no free
-// edge toward a vertex off the part: a free border never closes entirely (that might cut a
-// region in two) and never lies along the part with both ends on it (a gap of no thickness).
+// Flips the edges of `part` opposite v whose two triangles get a larger smallest angle by it,
+// where a triangle of v has one below `floor_deg` (after v was inserted into the part). The far
+// vertices of the flips are added to `touched`.
+void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>& touched) {
+  std::vector<int> edge;
+  for (int round = 0; round < 2; ++round)
+    for (int t : std::vector<int>(e.star(v))) {
+      if (!e.alive(t) || e.s_.triangle_part[t] != part || e.min_angle(t) >= floor_deg) continue;
+      const Triangle& g = e.s_.triangles[t];
+      const int k = g[0] == v ? 0 : g[1] == v ? 1 : 2;
+      const int b = g[(k + 1) % 3], c = g[(k + 2) % 3];
+      e.edge_triangles(b, c, edge);
+      if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != part || e.s_.triangle_part[edge[1]] != part) continue;
+      const int o = edge[0] == t ? edge[1] : edge[0];
+      const int w = Editor::opposite(e.s_.triangles[o], b, c);
+      if (e.edge_exists(v, w)) continue;
+      const Vec3 n = e.normal(t);
+      const double now = std::min(e.min_angle(t), e.min_angle(o));
+      const double then = std::min(min_angle_deg(e.p(v), e.p(b), e.p(w)), min_angle_deg(e.p(v), e.p(w), e.p(c)));
+      if (then <= now || normal_of(e.p(v), e.p(b), e.p(w)).dot(n) <= 0 || normal_of(e.p(v), e.p(w), e.p(c)).dot(n) <= 0)
+        continue;
+      e.kill(t);
+      e.kill(o);
+      e.add_triangle({v, b, w}, part);
+      e.add_triangle({v, w, c}, part);
+      touched.push_back(w);
+    }
+}
+
+// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it, and
+// any tet mesh keeping the surfaces fills the gap with tets about as flat as the gap is thin
+// against the triangles around it (remeshed CloudSpin_fixed at 10,000 seeds: a fault tip 19 m
+// from the next fault at the end of a 362 m edge, a 1.9 deg tet). Closer than d_min, the tip
+// joins the part (paper Fig. 11c-d, a fault tip joins the fault next to it): a free border
+// vertex v next to a vertex a of the part, whose gap d to the part is less than tan(max_wedge)
+// times the larger of |av| and the part's triangle under v, moves to the closest point of the
+// part's triangles around a or next to them and is inserted there (pinned), and (a, v) becomes
+// a contact edge, made in the part by a flip when v landed next to a's triangles. A join may
+// bring the next border vertex in. It is refused when it leaves a needle, a wedge thinner than
+// max_wedge at the new contact edge, or a free edge of v leaving the part at less than twice
+// max_wedge beyond d_min (the gap would only move on), and when v would keep no free edge
+// toward a vertex off the part: a free border never closes entirely (that might cut a region
+// in two) and never lies along the part with both ends on it (a gap of no thickness).
 int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report) {
-  constexpr double kJoinFloorDeg = 10.0;
+  constexpr double kJoinFloorDeg = 6.0;
   if (min_feature <= 0.0 || max_wedge_deg <= 0.0) return 0;
   const double max_wedge = max_wedge_deg * M_PI / 180.0, tan_wedge = std::tan(max_wedge);
   std::vector<FanBlade> fan;
   auto on_free_border = [&](int v) {
     const VertexFeature& f = e.s_.features[v];
     return f.kind == VertexFeature::Contact && e.input_.contacts[f.id].is_free_border();
+  };
+  auto on_part = [&](int w, int part) {
+    for (int t : e.star(w))
+      if (e.s_.triangle_part[t] == part) return true;
+    return false;
   };
   std::vector<std::pair<int, int>> border;  // border edges (a, v), both ways
   std::vector<int> edge;
@@ -1999,23 +2035,27 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
       }
     }
   };
-  auto on_part = [&](int w, int part) {
-    for (int t : e.star(w))
-      if (e.s_.triangle_part[t] == part) return true;
-    return false;
-  };
-  // Whether v keeps a free edge other than (a, v) whose other end is off `part`: joins then
-  // leave every free border an edge apart from the part, so that the region around it stays
-  // one (and no free edge lies along the part with both ends on it, a gap of no thickness).
-  auto keeps_free_edge = [&](int a, int v, int part) {
+  // The free edges (v, b) other than (a, v) with b off `part`.
+  std::vector<int> others;
+  auto free_edges_off = [&](int a, int v, int part) -> const std::vector<int>& {
+    others.clear();
     for (int t : e.star(v))
-      for (int w : e.s_.triangles[t]) {
-        if (w == v || w == a || on_part(w, part)) continue;
-        e.edge_triangles(v, w, edge);
-        if (edge.size() == 1) return true;
+      for (int b : e.s_.triangles[t]) {
+        if (b == v || b == a || on_part(b, part)) continue;
+        e.edge_triangles(v, b, edge);
+        if (edge.size() == 1) others.push_back(b);
       }
-    return false;
+    return others;
   };
+  // Whether, v on the part, the free edge (v, b) leaves it (the planes of its triangles at v)
+  // at less than twice the wedge with b farther than d_min from it.
+  auto thin_gap_beyond = [&](int v, int b, int part) {
+    double gap = std::numeric_limits<double>::infinity();
+    for (int u : e.star(v))
+      if (e.s_.triangle_part[u] == part) gap = std::min(gap, std::abs(e.normal(u).normalized().dot(e.p(b) - e.p(v))));
+    return gap >= min_feature && gap < std::tan(2.0 * max_wedge) * (e.p(b) - e.p(v)).norm();
+  };
+
   collect();
   int joined = 0;
   std::vector<int> candidates, before;
@@ -2027,8 +2067,8 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
       e.edge_triangles(a, v, edge);
       if (edge.size() != 1) continue;  // joined meanwhile
       const int own_part = e.s_.triangle_part[edge[0]];
-      // The triangles around a of the parts v is not on, and their neighbours across the edge
-      // opposite a.
+      // The nearest of the triangles around a of the parts v is not on, and of their
+      // neighbours across the edge opposite a.
       candidates.clear();
       for (int t : e.star(a)) {
         const int part = e.s_.triangle_part[t];
@@ -2053,11 +2093,13 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
           weights = w;
         }
       }
-      const double d = std::sqrt(best_d2);
-      if (best < 0 || d >= min_feature || d >= tan_wedge * (e.p(v) - e.p(a)).norm()) continue;
+      if (best < 0 || best_d2 >= min_feature * min_feature) continue;
+      const Triangle f = e.s_.triangles[best];
+      double span = (e.p(v) - e.p(a)).norm();
+      for (int i = 0; i < 3; ++i) span = std::max(span, (e.p(f[i]) - e.p(f[(i + 1) % 3])).norm());
+      if (std::sqrt(best_d2) >= tan_wedge * span) continue;
       // Into the triangle, or onto an edge of it when the point is that close to it (a sliver
       // otherwise); not next to a vertex (v would land on it) nor on a contact of the part.
-      const Triangle f = e.s_.triangles[best];
       constexpr double kEdgeWeight = 0.1;
       int near_edges = 0, opposite = -1;
       for (int i = 0; i < 3; ++i)
@@ -2076,7 +2118,7 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
         x = e.p(p) + std::clamp((e.p(v) - e.p(p)).dot(pq) / pq.squaredNorm(), 0.0, 1.0) * pq;
       }
       const int part = e.s_.triangle_part[best];
-      if (!keeps_free_edge(a, v, part)) continue;
+      if (free_edges_off(a, v, part).empty()) continue;
       std::vector<int> touched{a, v, f[0], f[1], f[2]};
       e.stars(touched, before);
       double own_floor = kJoinFloorDeg;
@@ -2112,10 +2154,13 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
           touched.push_back(y);
           touched.push_back(z);
         }
-        // No needle: the part's new triangles have no angle below kJoinFloorDeg, v's own no
+        flip_around(e, v, part, kJoinFloorDeg, touched);
+        // No needle: the part's triangles at v have no angle below kJoinFloorDeg, v's own no
         // smaller one than before.
         for (int t : e.star(v))
           if (e.min_angle(t) < (e.s_.triangle_part[t] == part ? kJoinFloorDeg : own_floor)) return false;
+        for (int b : std::vector<int>(free_edges_off(a, v, part)))
+          if (thin_gap_beyond(v, b, part)) return false;
         // The part must leave the new contact at more than the wedge (a tip lying along the part,
         // its own part close over a band, gains nothing from joining).
         e.edge_triangles(a, v, edge);
