@@ -512,11 +512,11 @@ TEST(MeshCleanup, AFaultTipCloserThanTheMinimumFeatureJoinsThePartItNearlyTouche
   }
   EXPECT_GT(off, 0);
 
-  // Without d_min, or with a tip leaving the horizon at 20 degrees (wider than the wedge bound),
-  // nothing joins.
+  // Without d_min, or with a tip leaving the horizon at 30 degrees (its first vertex 0.04 above
+  // it, more than tan 8 deg times the triangles there), nothing joins.
   RemeshedSurface kept = given;
   EXPECT_EQ(clean_up(kept, input, projector).tips_joined, 0);
-  const StructuralModel steep = fault_tip_over_horizon(20.0);
+  const StructuralModel steep = fault_tip_over_horizon(30.0);
   const SurfaceProjector steep_projector(steep);
   RemeshedSurface steep_kept = as_remeshed(steep);
   EXPECT_EQ(clean_up(steep_kept, steep, steep_projector, options).tips_joined, 0);
