@@ -1962,6 +1962,66 @@ int refine_toward_input(Editor& e, double tolerance) {
   return inserted;
 }
 
+// Collapses an edge of a triangle with an angle below `angle_deg` (its shortest possible one)
+// when that leaves fewer such triangles around the edge, or as many with the sharpest one 5 deg
+// less sharp. What the angle passes leave is mostly triangles no vertex move fixes: a short
+// contact edge between close contact points, a short rung across a thin strip; one vertex less
+// there often does. A collapse never makes a triangle sharper than min(its angle, 12 deg)
+// (collapse_allowed), nor the surfaces less valid, nor the remesh stray from the input by more
+// than the fidelity tolerance (where u was, and at the middles of the triangles around).
+int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_deg) {
+  int collapsed = 0;
+  std::vector<int> around;
+  auto sharpest = [&](const std::vector<int>& tris, int& count) {
+    double worst = 180.0;
+    count = 0;
+    for (int t : tris) {
+      const double a = e.min_angle(t);
+      worst = std::min(worst, a);
+      if (a < angle_deg) ++count;
+    }
+    return worst;
+  };
+  auto stays_faithful = [&](const Vec3& gone, int v) {
+    if (e.tolerance_ <= 0.0) return true;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int t : e.star(v)) {
+      const Triangle& f = e.s_.triangles[t];
+      nearest = std::min(nearest, squared_distance_to_triangle(gone, e.p(f[0]), e.p(f[1]), e.p(f[2])));
+      const Vec3 middle = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
+      if (projector.distance_to_part(e.s_.triangle_part[t], middle) > e.tolerance_) return false;
+    }
+    return nearest <= e.tolerance_ * e.tolerance_;
+  };
+  const size_t n = e.s_.triangles.size();
+  for (size_t k = 0; k < n; ++k) {
+    const int t = static_cast<int>(k);
+    if (!e.alive(t) || e.min_angle(t) >= angle_deg) continue;
+    const Triangle f = e.s_.triangles[t];
+    bool done = false;
+    for (int i : e.edges_by_length(f)) {
+      const int a = f[i], b = f[(i + 1) % 3];
+      for (const auto& [u, v] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
+        if (done || !collapse_allowed(e, u, v, 0.0, 12.0, false)) continue;
+        e.stars({u, v}, around);
+        int sharp_before = 0, sharp_after = 0;
+        const double worst_before = sharpest(around, sharp_before);
+        const Vec3 gone = e.p(u);
+        done = transact(e, around, false, [&](std::vector<int>& after) {
+          collapse(e, u, v);
+          after = e.star(v);
+          const double worst_after = sharpest(after, sharp_after);
+          return (sharp_after < sharp_before || (sharp_after == sharp_before && worst_after > worst_before + 5.0)) &&
+                 stays_faithful(gone, v);
+        });
+      }
+      if (done) break;
+    }
+    collapsed += done ? 1 : 0;
+  }
+  return collapsed;
+}
+
 // Flips the edges of `part` opposite v whose two triangles get a larger smallest angle by it,
 // where a triangle of v has one below `floor_deg` (after v was inserted into the part). The far
 // vertices of the flips are added to `touched`.
@@ -2395,6 +2455,20 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     report.flips += flip_edges(e, options.flip_flatness_deg);
   }
   for (int i = 0; i < options.angle_passes; ++i) {
+    const int moved = optimize_angles(e, projector, 30.0);
+    if (moved == 0) break;
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+  }
+  // What the angle passes could not fix, an edge collapse sometimes does; then they go again.
+  int collapsed = 0;
+  for (int round = 0; round < options.sharp_collapse_rounds; ++round) {
+    const int n = collapse_sharp(e, projector, 30.0);
+    if (n == 0) break;
+    collapsed += n;
+    report.flips += flip_edges(e, options.flip_flatness_deg);
+  }
+  report.sharp_collapses += collapsed;
+  for (int i = 0; collapsed > 0 && i < options.angle_passes; ++i) {
     const int moved = optimize_angles(e, projector, 30.0);
     if (moved == 0) break;
     report.flips += flip_edges(e, options.flip_flatness_deg);

@@ -31,6 +31,9 @@ struct CleanupOptions {
   /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
   /// angle around them is largest (after the smoothing).
   int angle_passes = 8;
+  /// Rounds collapsing edges of triangles still sharper than 30 degrees after the angle passes,
+  /// where one vertex less leaves fewer of them (each followed by the angle passes again).
+  int sharp_collapse_rounds = 4;
   /// Passes moving the vertices of triangles with Q below `quality_below` to where the sum of Q
   /// of their triangles is largest, none of them getting sharper than 30 degrees (after the
   /// angle passes; see optimize_quality in mesh_cleanup.cpp).
@@ -48,6 +51,7 @@ struct CleanupReport {
   int valence3_removed = 0;
   int valence3_raised = 0;    // contact vertices given a fourth triangle in a part (a flip)
   int needles_collapsed = 0;
+  int sharp_collapses = 0;    // edges collapsed to leave fewer triangles sharper than 30 degrees
   int quality_moves = 0;      // vertex moves of the quality passes
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int tips_joined = 0;        // free border vertices joined to the part they nearly touch

@@ -170,6 +170,7 @@ class RemeshModule final : public Module {
     report["cleanup"] = {{"valence3_removed", result.cleanup.valence3_removed},
                          {"valence3_raised", result.cleanup.valence3_raised},
                          {"needles_collapsed", result.cleanup.needles_collapsed},
+                         {"sharp_collapses", result.cleanup.sharp_collapses},
                          {"quality_moves", result.cleanup.quality_moves},
                          {"wedge_moves", result.cleanup.wedge_moves},
                          {"tips_joined", result.cleanup.tips_joined},

@@ -154,6 +154,71 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
 
+int sharper_than_30(const RemeshedSurface& s) {
+  int n = 0;
+  for (const Triangle& t : s.triangles)
+    n += measure_triangle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]).min_angle_deg < 30.0 ? 1 : 0;
+  return n;
+}
+
+TEST(MeshCleanup, CollapsesAContactEdgeThatLeavesSharpTriangles) {
+  // A contact vertex inserted on an edge of the horizon's contact with a box side, 0.3 of the
+  // way: its triangles in the three parts at the edge have angles under 30 deg. Vertex moves
+  // (smoothing, angle and quality passes) are off and the needle bound is low, so that the
+  // collapse pass is what is measured: collapsing it along the contact fixes them, in every part
+  // at once (flips alone leave two).
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  // An edge of the horizon's contact: three triangles, both ends on one contact.
+  std::map<std::pair<int, int>, int> triangles_at;
+  for (const Triangle& f : s.triangles)
+    for (int i = 0; i < 3; ++i) ++triangles_at[{std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])}];
+  int u = -1, w = -1;
+  for (const auto& [edge, count] : triangles_at) {
+    const VertexFeature fa = s.features[edge.first], fb = s.features[edge.second];
+    if (count == 3 && fa.kind == VertexFeature::Contact && fb.kind == VertexFeature::Contact && fa.id == fb.id) {
+      u = edge.first;
+      w = edge.second;
+      break;
+    }
+  }
+  ASSERT_GE(u, 0);
+  const int p = static_cast<int>(s.vertices.size());
+  s.vertices.push_back(s.vertices[u] + 0.3 * (s.vertices[w] - s.vertices[u]));
+  s.features.push_back(s.features[u]);
+  const size_t n = s.triangles.size();
+  for (size_t t = 0; t < n; ++t) {
+    const Triangle f = s.triangles[t];
+    for (int i = 0; i < 3; ++i)
+      if ((f[i] == u && f[(i + 1) % 3] == w) || (f[i] == w && f[(i + 1) % 3] == u)) {
+        const int a = f[i], b = f[(i + 1) % 3], c = f[(i + 2) % 3];
+        s.triangles[t] = {a, p, c};
+        s.triangles.push_back({p, b, c});
+        s.triangle_part.push_back(s.triangle_part[t]);
+        break;
+      }
+  }
+  ASSERT_EQ(s.triangles.size(), n + 3);
+  ASSERT_GE(sharper_than_30(s), 3);
+
+  CleanupOptions with, without;
+  with.smoothing_iterations = without.smoothing_iterations = 0;
+  with.angle_passes = without.angle_passes = 0;
+  with.quality_passes = without.quality_passes = 0;
+  with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
+  with.needle_angle_deg = without.needle_angle_deg = 5.0;
+  without.sharp_collapse_rounds = 0;
+  RemeshedSurface kept = s, collapsed = s;
+  clean_up(kept, input, projector, without);
+  const CleanupReport report = clean_up(collapsed, input, projector, with);
+  EXPECT_GE(sharper_than_30(kept), 2);
+  EXPECT_GE(report.sharp_collapses, 1);
+  EXPECT_EQ(sharper_than_30(collapsed), 0);
+  EXPECT_EQ(collapsed.triangles.size(), n);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.degenerate_left, 0);
+}
+
 // Triangles of `part` around vertex v.
 int part_valence(const RemeshedSurface& s, int v, int part) {
   int n = 0;
@@ -195,6 +260,7 @@ TEST(MeshCleanup, GivesAContactVertexAFourthTriangleInAPartThatRunsOn) {
   CleanupOptions options;
   options.smoothing_iterations = 0;
   options.angle_passes = 0;
+  options.sharp_collapse_rounds = 0;
   options.min_feature = 0.0;
   options.fidelity_tolerance = 0.0;
   const CleanupReport report = clean_up(s, input, projector, options);
@@ -380,13 +446,14 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
   const double before = forced_wedge_dihedral(given, 0, 1);
   ASSERT_LT(before, 5.0);
 
-  // The wedge pass alone (no smoothing, flips, angle or quality passes, which would shift the
-  // rows back here), and nothing.
+  // The wedge pass alone (no smoothing, flips, angle or quality passes nor collapses, which would
+  // shift the rows back here), and nothing.
   CleanupOptions with, without;
   with.smoothing_iterations = without.smoothing_iterations = 0;
   with.angle_passes = without.angle_passes = 0;
   with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
   with.quality_passes = without.quality_passes = 0;
+  with.sharp_collapse_rounds = without.sharp_collapse_rounds = 0;
   without.wedge_dihedral_deg = 0.0;
   RemeshedSurface plain = given;
   clean_up(plain, input, projector, without);
