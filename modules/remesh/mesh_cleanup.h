@@ -1,7 +1,8 @@
 // Clean-up of the remeshed surfaces (paper §3.3): remove valence-3 interior vertices and needle
-// triangles without unsealing contacts, merge features closer than d_min, improve the
-// triangles with edge flips and tangential smoothing, keep every vertex on the input feature it
-// samples, and resolve the remaining intersections. Every edit is a transaction checked against
+// triangles without unsealing contacts, merge features closer than d_min (fault tips nearly
+// touching a part join it), improve the triangles with edge flips, tangential smoothing, vertex
+// moves and edge collapses, keep every vertex on the input feature it samples, and resolve the
+// remaining intersections. Every edit is a transaction checked against
 // what makes a structural model invalid (holes, leaks between regions, crossings, degenerate
 // triangles, pinches, folds at contacts and pleats) and undone when it makes that worse; a last
 // repair pass makes it better where it can and counts what is left.
