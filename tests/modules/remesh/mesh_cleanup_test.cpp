@@ -154,6 +154,18 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
 
+// Options with the smoothing, flips, angle and quality passes and sharp-edge collapses off, so
+// that the pass a test is about is measured alone.
+CleanupOptions moves_off() {
+  CleanupOptions o;
+  o.smoothing_iterations = 0;
+  o.angle_passes = 0;
+  o.quality_passes = 0;
+  o.flip_flatness_deg = 0.0;
+  o.sharp_collapse_rounds = 0;
+  return o;
+}
+
 int sharper_than_30(const RemeshedSurface& s) {
   int n = 0;
   for (const Triangle& t : s.triangles)
@@ -164,9 +176,8 @@ int sharper_than_30(const RemeshedSurface& s) {
 TEST(MeshCleanup, CollapsesAContactEdgeThatLeavesSharpTriangles) {
   // A contact vertex inserted on an edge of the horizon's contact with a box side, 0.3 of the
   // way: its triangles in the three parts at the edge have angles under 30 deg. Vertex moves
-  // (smoothing, angle and quality passes) are off and the needle bound is low, so that the
-  // collapse pass is what is measured: collapsing it along the contact fixes them, in every part
-  // at once (flips alone leave two).
+  // and flips are off and the needle bound is low, so that the collapse pass is what is
+  // measured: collapsing it along the contact fixes them, in every part at once.
   const StructuralModel input = build_model(test::lattice_box(4, true));
   const SurfaceProjector projector(input);
   RemeshedSurface s = as_remeshed(input);
@@ -202,13 +213,9 @@ TEST(MeshCleanup, CollapsesAContactEdgeThatLeavesSharpTriangles) {
   ASSERT_EQ(s.triangles.size(), n + 3);
   ASSERT_GE(sharper_than_30(s), 3);
 
-  CleanupOptions with, without;
-  with.smoothing_iterations = without.smoothing_iterations = 0;
-  with.angle_passes = without.angle_passes = 0;
-  with.quality_passes = without.quality_passes = 0;
-  with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
+  CleanupOptions with = moves_off(), without = moves_off();
   with.needle_angle_deg = without.needle_angle_deg = 5.0;
-  without.sharp_collapse_rounds = 0;
+  with.sharp_collapse_rounds = 4;
   RemeshedSurface kept = s, collapsed = s;
   clean_up(kept, input, projector, without);
   const CleanupReport report = clean_up(collapsed, input, projector, with);
@@ -448,12 +455,7 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
 
   // The wedge pass alone (no smoothing, flips, angle or quality passes nor collapses, which would
   // shift the rows back here), and nothing.
-  CleanupOptions with, without;
-  with.smoothing_iterations = without.smoothing_iterations = 0;
-  with.angle_passes = without.angle_passes = 0;
-  with.flip_flatness_deg = without.flip_flatness_deg = 0.0;
-  with.quality_passes = without.quality_passes = 0;
-  with.sharp_collapse_rounds = without.sharp_collapse_rounds = 0;
+  CleanupOptions with = moves_off(), without = moves_off();
   without.wedge_dihedral_deg = 0.0;
   RemeshedSurface plain = given;
   clean_up(plain, input, projector, without);
