@@ -764,6 +764,44 @@ int remove_valence3(Editor& e) {
   return removed;
 }
 
+// A flip of the edge (x, y) facing v in its triangle t = (v, x, y): t and the triangle
+// (y, x, o) of the same part beyond the edge would become (v, x, o) and (v, o, y). False when
+// the edge is a contact edge, o is v, or a new triangle would face away from the two it
+// replaces. Whether the new edge (v, o) may exist elsewhere is the caller's call.
+struct OppositeFlip {
+  int out = -1;  // the triangle beyond the edge
+  int o = -1;    // its far vertex
+  Triangle g1{}, g2{};
+  double min_angle = 0.0;  // smallest angle of g1 and g2
+};
+bool opposite_flip(Editor& e, int v, int t, OppositeFlip& flip) {
+  const Triangle& f = e.s_.triangles[t];
+  const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
+  const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
+  std::vector<int> edge;
+  e.edge_triangles(x, y, edge);
+  if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != e.s_.triangle_part[edge[1]]) return false;
+  flip.out = edge[0] == t ? edge[1] : edge[0];
+  flip.o = Editor::opposite(e.s_.triangles[flip.out], x, y);
+  if (flip.o == v) return false;
+  flip.g1 = {v, x, flip.o};
+  flip.g2 = {v, flip.o, y};
+  const Vec3 ref = e.normal(t) + e.normal(flip.out);
+  if (normal_of(e.p(v), e.p(x), e.p(flip.o)).dot(ref) <= 0 || normal_of(e.p(v), e.p(flip.o), e.p(y)).dot(ref) <= 0)
+    return false;
+  flip.min_angle = std::min(min_angle_deg(e.p(v), e.p(x), e.p(flip.o)), min_angle_deg(e.p(v), e.p(flip.o), e.p(y)));
+  return true;
+}
+
+// Makes the flip: t and flip.out become flip.g1 and flip.g2, whose ids go to `added`.
+void apply_flip(Editor& e, int t, const OppositeFlip& flip, std::vector<int>* added = nullptr) {
+  const int part = e.s_.triangle_part[t];
+  e.kill(t);
+  e.kill(flip.out);
+  const int t1 = e.add_triangle(flip.g1, part), t2 = e.add_triangle(flip.g2, part);
+  if (added) added->insert(added->end(), {t1, t2});
+}
+
 // Vertices on contacts cannot go, but a part that runs on across the contact (a horizon ending
 // on a fault: the fault part holds the contact) may close a fan of three triangles around one.
 // On a flat part that fan is a dent or a bump that no tet mesh keeping the surface fills
@@ -771,7 +809,6 @@ int remove_valence3(Editor& e) {
 // toward the best-shaped pair, gives the vertex four triangles there.
 int raise_valence3_on_contacts(Editor& e) {
   int raised = 0;
-  std::vector<int> edge;
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     const std::vector<int>& ring = e.star(v);
@@ -785,41 +822,18 @@ int raise_valence3_on_contacts(Editor& e) {
     for (int t : ring) by_part[e.s_.triangle_part[t]].push_back(t);
     for (const auto& [part, fan] : by_part) {
       if (fan.size() != 3 || e.closed_fan_size(v, part) != 3) continue;
-      // Best flip of a side (x, y) of the fan that is not on a contact: triangle (v, x, y) and the
-      // triangle (y, x, o) of the part beyond it become (v, x, o) and (v, o, y).
-      double best_angle = 0.0;
-      int best_in = -1, best_out = -1;
-      Triangle g1{}, g2{};
-      for (int t : fan) {
-        const Triangle& f = e.s_.triangles[t];
-        const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
-        const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
-        if (e.is_line_edge(x, y)) continue;
-        e.edge_triangles(x, y, edge);
-        if (edge.size() != 2) continue;
-        const int out = edge[0] == t ? edge[1] : edge[0];
-        if (e.s_.triangle_part[out] != part) continue;
-        const int o = Editor::opposite(e.s_.triangles[out], x, y);
-        if (o == v || e.edge_exists(v, o)) continue;
-        const Triangle a{v, x, o}, b{v, o, y};
-        const Vec3 ref = e.normal(t) + e.normal(out);
-        if (normal_of(e.p(v), e.p(x), e.p(o)).dot(ref) <= 0 || normal_of(e.p(v), e.p(o), e.p(y)).dot(ref) <= 0)
-          continue;
-        const double angle =
-            std::min(min_angle_deg(e.p(v), e.p(x), e.p(o)), min_angle_deg(e.p(v), e.p(o), e.p(y)));
-        if (angle > best_angle) {
-          best_angle = angle;
+      // Best flip of a side of the fan that is not on a contact (opposite_flip()).
+      OppositeFlip best, flip;
+      int best_in = -1;
+      for (int t : fan)
+        if (opposite_flip(e, v, t, flip) && !e.edge_exists(v, flip.o) && flip.min_angle > best.min_angle) {
+          best = flip;
           best_in = t;
-          best_out = out;
-          g1 = a;
-          g2 = b;
         }
-      }
       if (best_in < 0) continue;
-      if (transact(e, {best_in, best_out}, false, [&](std::vector<int>& after) {
-            e.kill(best_in);
-            e.kill(best_out);
-            after = {e.add_triangle(g1, part), e.add_triangle(g2, part)};
+      if (transact(e, {best_in, best.out}, false, [&](std::vector<int>& after) {
+            after.clear();
+            apply_flip(e, best_in, best, &after);
             return true;
           }))
         ++raised;
@@ -2026,28 +2040,14 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
 // where a triangle of v has one below `floor_deg` (after v was inserted into the part). The far
 // vertices of the flips are added to `touched`.
 void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>& touched) {
-  std::vector<int> edge;
+  OppositeFlip flip;
   for (int round = 0; round < 2; ++round)
     for (int t : std::vector<int>(e.star(v))) {
       if (!e.alive(t) || e.s_.triangle_part[t] != part || e.min_angle(t) >= floor_deg) continue;
-      const Triangle& g = e.s_.triangles[t];
-      const int k = g[0] == v ? 0 : g[1] == v ? 1 : 2;
-      const int b = g[(k + 1) % 3], c = g[(k + 2) % 3];
-      e.edge_triangles(b, c, edge);
-      if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != part || e.s_.triangle_part[edge[1]] != part) continue;
-      const int o = edge[0] == t ? edge[1] : edge[0];
-      const int w = Editor::opposite(e.s_.triangles[o], b, c);
-      if (e.edge_exists(v, w)) continue;
-      const Vec3 n = e.normal(t);
-      const double now = std::min(e.min_angle(t), e.min_angle(o));
-      const double then = std::min(min_angle_deg(e.p(v), e.p(b), e.p(w)), min_angle_deg(e.p(v), e.p(w), e.p(c)));
-      if (then <= now || normal_of(e.p(v), e.p(b), e.p(w)).dot(n) <= 0 || normal_of(e.p(v), e.p(w), e.p(c)).dot(n) <= 0)
-        continue;
-      e.kill(t);
-      e.kill(o);
-      e.add_triangle({v, b, w}, part);
-      e.add_triangle({v, w, c}, part);
-      touched.push_back(w);
+      if (!opposite_flip(e, v, t, flip) || e.edge_exists(v, flip.o)) continue;
+      if (flip.min_angle <= std::min(e.min_angle(t), e.min_angle(flip.out))) continue;
+      apply_flip(e, t, flip);
+      touched.push_back(flip.o);
     }
 }
 
@@ -2193,26 +2193,14 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
         }
         e.edge_triangles(a, v, edge);
         if (std::none_of(edge.begin(), edge.end(), [&](int t) { return e.s_.triangle_part[t] == part; })) {
-          // v landed next to a's triangles: flip the edge (y, z) between (a, y, z) and (z, y, v).
-          int t1 = -1, t2 = -1;
-          for (int t : e.star(a)) {
-            if (e.s_.triangle_part[t] != part) continue;
-            const Triangle& g = e.s_.triangles[t];
-            const int k = g[0] == a ? 0 : g[1] == a ? 1 : 2;
-            e.edge_triangles(g[(k + 2) % 3], g[(k + 1) % 3], edge);
-            for (int o : edge)
-              if (o != t && e.s_.triangle_part[o] == part && Editor::has(e.s_.triangles[o], v)) t1 = t, t2 = o;
-          }
+          // v landed next to a's triangles: flip the edge of one of them facing a, beyond which v is.
+          OppositeFlip flip;
+          int t1 = -1;
+          for (int t : e.star(a))
+            if (t1 < 0 && e.s_.triangle_part[t] == part && opposite_flip(e, a, t, flip) && flip.o == v) t1 = t;
           if (t1 < 0) return false;
-          const Triangle g = e.s_.triangles[t1];
-          const int k = g[0] == a ? 0 : g[1] == a ? 1 : 2;
-          const int y = g[(k + 1) % 3], z = g[(k + 2) % 3];
-          e.kill(t1);
-          e.kill(t2);
-          e.add_triangle({a, y, v}, part);
-          e.add_triangle({a, v, z}, part);
-          touched.push_back(y);
-          touched.push_back(z);
+          for (int w : e.s_.triangles[t1]) touched.push_back(w);
+          apply_flip(e, t1, flip);
         }
         flip_around(e, v, part, kJoinFloorDeg, touched);
         // No needle: the part's triangles at v have no angle below kJoinFloorDeg, v's own no
