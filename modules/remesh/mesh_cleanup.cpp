@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -936,6 +937,30 @@ int shared_contact(const Editor& e, int u, int v) {
   return -1;
 }
 
+// The contact the line edge (u, v) samples: the one whose parts are the edge's. Between two
+// corners that both end several contacts (a thin strip pinched at both ends) shared_contact()
+// cannot tell which, and after merges an end may carry the feature of the contact it was merged
+// into; the edge's parts tell (the nearest of the contacts with those parts). Else
+// shared_contact().
+int line_contact(Editor& e, const SurfaceProjector& projector,
+                 const std::map<std::vector<int>, std::vector<int>>& contacts_by_parts, int u, int v) {
+  std::vector<int> edge, parts;
+  e.edge_triangles(u, v, edge);
+  for (int t : edge) parts.push_back(e.s_.triangle_part[t]);
+  std::sort(parts.begin(), parts.end());
+  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  const auto it = contacts_by_parts.find(parts);
+  if (it == contacts_by_parts.end()) return shared_contact(e, u, v);
+  const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int c : it->second) {
+    const double d = (projector.on_contact(c, middle) - middle).squaredNorm();
+    if (d < best_distance) best = c, best_distance = d;
+  }
+  return best;
+}
+
 // Splits edge (u, v) at vertex w in every triangle that has it, keeping orientations; the new
 // triangles are appended to `added`.
 void split(Editor& e, int u, int v, int w, std::vector<int>* added = nullptr) {
@@ -994,9 +1019,31 @@ bool on_one_contact(const Editor& e, const Triangle& f) {
 // one alone would pinch the strip at a point (its part would touch itself there), so the
 // candidates of a stretch (candidates whose triangles share edges) are merged together, in one
 // edit checked as a whole; a stretch whose whole edit is refused is tried candidate by candidate.
-// A part never loses its last triangles this way, so the regions keep their neighbours.
+// A part loses its last triangles this way only when another part still separates the two
+// regions it separates (a fault strip thinner than d_min between the two cut-offs of a horizon,
+// CloudSpin's Cyan_ts/3, 2 m wide), so the regions keep their neighbours.
 void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report) {
   if (min_feature <= 0.0) return;
+  // The region pair of each part (the universe is -1) and how many parts with triangles
+  // separate each pair.
+  auto pair_of = [&](int part) {
+    const auto [plus, minus] = e.part_regions_[part];
+    return std::make_pair(std::min(plus, minus), std::max(plus, minus));
+  };
+  std::map<std::pair<int, int>, int> separating;
+  {
+    std::vector<char> has_triangles(e.input_.parts.size(), 0);
+    for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+      if (e.alive(static_cast<int>(t))) has_triangles[e.s_.triangle_part[t]] = 1;
+    for (size_t part = 0; part < has_triangles.size(); ++part)
+      if (has_triangles[part]) ++separating[pair_of(static_cast<int>(part))];
+  }
+  auto may_vanish = [&](int part, const std::map<std::pair<int, int>, int>& vanishing) {
+    const auto key = pair_of(part);
+    if (key.first < -1 || key.first == key.second) return false;
+    const auto it = vanishing.find(key);
+    return separating[key] - (it == vanishing.end() ? 0 : it->second) >= 2;
+  };
   struct Candidate {
     double distance;
     int kind;        // 0: rung (u, v); 1: strip triangle t with base (u, v) and apex w
@@ -1014,6 +1061,9 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
     const VertexFeature& c = a.kind == VertexFeature::Corner ? a : b;
     return !e.corner_ends_contact(c.id, k.id);
   };
+  std::map<std::vector<int>, std::vector<int>> contacts_by_parts;
+  for (size_t c = 0; c < e.input_.contacts.size(); ++c)
+    contacts_by_parts[e.input_.contacts[c].parts].push_back(static_cast<int>(c));
   std::vector<Candidate> candidates;
   std::vector<int> part_triangles(e.input_.parts.size(), 0);
   for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
@@ -1029,8 +1079,9 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
           len < min_feature)
         candidates.push_back({len, 0, std::min(u, v), std::max(u, v), -1, t, -1});
       // Strip triangle: apex w near the base (u, v), its foot well inside the base.
-      const int c = shared_contact(e, u, v);
-      if (c < 0 || fw.kind == VertexFeature::Surface || !e.is_line_edge(u, v)) continue;
+      if (fw.kind == VertexFeature::Surface || !e.is_line_edge(u, v)) continue;
+      const int c = line_contact(e, projector, contacts_by_parts, u, v);
+      if (c < 0) continue;
       if (fw.kind == VertexFeature::Contact ? fw.id == c : e.corner_ends_contact(fw.id, c)) continue;
       const Vec3 d = e.p(v) - e.p(u);
       if (d.squaredNorm() == 0) continue;
@@ -1083,16 +1134,33 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
     e.stars(verts, before);
     std::vector<FeatureMerge> merged;
     std::vector<int> lost(part_triangles.size(), 0);
+    std::map<std::pair<int, int>, int> vanishing;  // region pair -> parts losing their last triangles
+    std::vector<int> vanished;
     const bool done = transact(e, before, false, [&](std::vector<int>& after) {
       merged.clear();
       std::fill(lost.begin(), lost.end(), 0);
+      vanishing.clear();
+      vanished.clear();
       std::vector<int> edge, kept;
-      // The triangles of edge (a, b) die with it: refused when a part would lose its last ones.
+      // The triangles of edge (a, b) die with it: refused when a part would lose its last ones,
+      // unless it may vanish.
       auto spare = [&](int a, int b) {
         e.edge_triangles(a, b, edge);
-        for (int t : edge)
-          if (lost[e.s_.triangle_part[t]] + 1 >= part_triangles[e.s_.triangle_part[t]]) return false;
-        for (int t : edge) ++lost[e.s_.triangle_part[t]];
+        std::map<int, int> dying;  // part -> its triangles on the edge
+        for (int t : edge) ++dying[e.s_.triangle_part[t]];
+        std::vector<int> last;
+        for (const auto& [part, k] : dying) {
+          if (lost[part] + k < part_triangles[part] ||
+              std::find(vanished.begin(), vanished.end(), part) != vanished.end())
+            continue;
+          if (!may_vanish(part, vanishing)) return false;
+          last.push_back(part);
+        }
+        for (int part : last) {
+          vanished.push_back(part);
+          ++vanishing[pair_of(part)];
+        }
+        for (const auto& [part, k] : dying) lost[part] += k;
         return true;
       };
       for (int i : members) {
@@ -1135,6 +1203,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
     });
     if (!done) return false;
     for (size_t p = 0; p < lost.size(); ++p) part_triangles[p] -= lost[p];
+    for (int part : vanished) --separating[pair_of(part)];
     report.merges.insert(report.merges.end(), merged.begin(), merged.end());
     return true;
   };

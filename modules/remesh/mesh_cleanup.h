@@ -23,7 +23,8 @@ struct CleanupOptions {
   int intersection_rounds = 6;
   /// d_min (paper Fig. 11c-d): an edge shorter than this between vertices on different contacts
   /// (or a contact and a corner) is collapsed, merging the features there: the thin strip of a
-  /// small fault throw closes, a fault tip joins the fault next to it. 0 disables it.
+  /// small fault throw closes, a fault tip joins the fault next to it. A part loses its last
+  /// triangles this way only where another part still separates its two regions. 0 disables it.
   double min_feature = 0.0;
   /// Contact edges whose chord strays farther than this from their input contact, and triangles
   /// whose middle strays farther than this from their input part, are split (the farthest input

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -589,6 +590,156 @@ TEST(MeshCleanup, AFaultTipCloserThanTheMinimumFeatureJoinsThePartItNearlyTouche
   const SurfaceProjector steep_projector(steep);
   RemeshedSurface steep_kept = as_remeshed(steep);
   EXPECT_EQ(clean_up(steep_kept, steep, steep_projector, options).tips_joined, 0);
+}
+
+// A unit box cut by a vertical fault x = 0.5 and a horizon, at z = 0.5 left of the fault and
+// z = 0.5 + throw[j] right of it (y = j / 8). Where the throw is 0 the two cut-off lines of the
+// horizon meet on the fault; between such points the fault part between them is a lens that
+// separates the upper left block from the lower right one.
+StructuralModel fault_with_throws(const std::array<double, 9>& throws) {
+  const int n = 8;
+  SurfaceSoup soup;
+  soup.source = "fault_with_throws";
+  std::map<std::array<double, 3>, int> index;
+  auto point = [&](double x, double y, double z) {
+    auto [it, added] = index.emplace(std::array<double, 3>{x, y, z}, static_cast<int>(soup.points.size()));
+    if (added) soup.points.emplace_back(x, y, z);
+    return it->second;
+  };
+  soup.groups = {{"box", "box", SurfaceKind::Boundary, ""},
+                 {"horizon", "horizon", SurfaceKind::Horizon, ""},
+                 {"fault", "fault", SurfaceKind::Fault, ""}};
+  auto triangle = [&](int g, int a, int b, int c) {
+    if (a == b || b == c || c == a) return;
+    soup.triangles.push_back({a, b, c});
+    soup.triangle_group.push_back(g);
+  };
+  // A grid of columns: column c has the points of rows[c], triangles between neighbouring
+  // columns (zipped by height where one column has the fault's extra level).
+  auto sheet = [&](int g, const std::vector<std::vector<int>>& rows) {
+    for (size_t c = 0; c + 1 < rows.size(); ++c) {
+      const std::vector<int>&a = rows[c], &b = rows[c + 1];
+      for (size_t i = 0, j = 0; i + 1 < a.size() || j + 1 < b.size();) {
+        const bool along_a = j + 1 == b.size() ||
+                             (i + 1 < a.size() && (a.size() == b.size() ? i == j
+                                                                        : soup.points[a[i + 1]].z() <= soup.points[b[j + 1]].z()));
+        if (along_a) {
+          triangle(g, a[i], b[j], a[i + 1]);
+          ++i;
+        } else {
+          triangle(g, a[i], b[j], b[j + 1]);
+          ++j;
+        }
+      }
+    }
+  };
+  auto t = [&](double y) { return throws[static_cast<size_t>(std::lround(y * n))]; };
+  // z levels of a column at (x, y): the grid's, with the horizon's level on each side.
+  auto levels = [&](double x, double y) {
+    std::vector<double> z;
+    for (int k = 0; k <= n; ++k) z.push_back(k * 1.0 / n);
+    if (x > 0.5) z[n / 2] += t(y);
+    if (x == 0.5) z.insert(z.begin() + n / 2 + 1, 0.5 + t(y));
+    return z;
+  };
+  auto column = [&](double x, double y) {
+    std::vector<int> ids;
+    for (double z : levels(x, y)) ids.push_back(point(x, y, z));
+    return ids;
+  };
+  std::vector<double> xs, ys;
+  for (int i = 0; i <= n; ++i) xs.push_back(i * 1.0 / n), ys.push_back(i * 1.0 / n);
+  std::vector<std::vector<int>> fault, xmin, xmax, ymin, ymax;
+  for (double y : ys) fault.push_back(column(0.5, y)), xmin.push_back(column(0, y)), xmax.push_back(column(1, y));
+  for (double x : xs) ymin.push_back(column(x, 0)), ymax.push_back(column(x, 1));
+  sheet(2, fault);
+  sheet(0, xmin);
+  sheet(0, xmax);
+  sheet(0, ymin);
+  sheet(0, ymax);
+  // Bottom, top and the horizon: rows along y, one sheet per side of the fault.
+  for (int side = 0; side < 2; ++side) {
+    std::vector<std::vector<int>> bottom, top, horizon;
+    for (int i = side * n / 2; i <= n / 2 + side * n / 2; ++i) {
+      std::vector<int> b, u, h;
+      for (double y : ys) {
+        b.push_back(point(xs[i], y, 0));
+        u.push_back(point(xs[i], y, 1));
+        h.push_back(point(xs[i], y, 0.5 + (side == 1 ? t(y) : 0.0)));
+      }
+      bottom.push_back(b), top.push_back(u), horizon.push_back(h);
+    }
+    sheet(0, bottom);
+    sheet(0, top);
+    sheet(1, horizon);
+  }
+  return build_model(soup);
+}
+
+// The triangles of each part.
+std::vector<int> part_sizes(const RemeshedSurface& s, size_t parts) {
+  std::vector<int> count(parts, 0);
+  for (int p : s.triangle_part) ++count[p];
+  return count;
+}
+
+TEST(MeshCleanup, AFaultLensThinnerThanTheMinimumFeatureGoesWhenAnotherKeepsItsRegionsApart) {
+  // Two lenses between the horizon's cut-offs: y in [0, 0.5] 0.02 wide, y in [0.5, 1] 0.1 wide;
+  // both separate the same two blocks.
+  const StructuralModel input = fault_with_throws({0, 0.02, 0.02, 0.02, 0, 0.1, 0.1, 0.1, 0});
+  ASSERT_EQ(input.regions.size(), 4u);
+  // The lenses: fault parts between the cut-offs (all their vertices at 0.5 <= z <= 0.6).
+  std::vector<int> lenses;
+  for (size_t p = 0; p < input.parts.size(); ++p) {
+    double lowest = 1.0, highest = 0.0;
+    for (int v : input.parts[p].model_vertex) {
+      lowest = std::min(lowest, (input.vertices[v] + input.frame.origin).z());
+      highest = std::max(highest, (input.vertices[v] + input.frame.origin).z());
+    }
+    if (input.parts[p].name.rfind("fault", 0) == 0 && lowest > 0.5 - 1e-9 && highest < 0.6 + 1e-9)
+      lenses.push_back(static_cast<int>(p));
+  }
+  ASSERT_EQ(lenses.size(), 2u);
+  EXPECT_EQ(input.part_regions()[lenses[0]], input.part_regions()[lenses[1]]);
+  auto width = [&](int part) {
+    double top = 0.0;
+    for (int v : input.parts[part].model_vertex) top = std::max(top, (input.vertices[v] + input.frame.origin).z());
+    return top - 0.5;
+  };
+  const int thin = width(lenses[0]) < width(lenses[1]) ? lenses[0] : lenses[1], wide = lenses[0] + lenses[1] - thin;
+  ASSERT_NEAR(width(thin), 0.02, 1e-9);
+
+  // The merges alone (the needle collapses and the repair zip lenses of needles, whatever the
+  // regions: the thin lens's triangles have 9 deg angles).
+  const SurfaceProjector projector(input);
+  CleanupOptions only_merges = moves_off();
+  only_merges.needle_angle_deg = 1.0;
+  CleanupOptions options = only_merges;
+  options.min_feature = 0.05;
+  RemeshedSurface s = as_remeshed(input);
+  const CleanupReport report = clean_up(s, input, projector, options);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left +
+                report.degenerate_left + report.pinches_left,
+            0);
+  const std::vector<int> sizes = part_sizes(s, input.parts.size());
+  EXPECT_EQ(sizes[thin], 0);
+  EXPECT_GT(sizes[wide], 0);
+  EXPECT_FALSE(report.merges.empty());
+
+  // Without d_min the thin lens stays whole.
+  RemeshedSurface kept = as_remeshed(input);
+  const int before = part_sizes(kept, input.parts.size())[thin];
+  clean_up(kept, input, projector, only_merges);
+  EXPECT_EQ(part_sizes(kept, input.parts.size())[thin], before);
+
+  // A thin lens alone between the two blocks keeps triangles: it is all that separates them.
+  const StructuralModel alone = fault_with_throws({0, 0.02, 0.02, 0.02, 0.02, 0.02, 0.02, 0.02, 0});
+  const SurfaceProjector alone_projector(alone);
+  RemeshedSurface alone_s = as_remeshed(alone);
+  const CleanupReport alone_report = clean_up(alone_s, alone, alone_projector, options);
+  EXPECT_FALSE(alone_report.merges.empty());
+  const std::vector<int> alone_sizes = part_sizes(alone_s, alone.parts.size());
+  for (size_t p = 0; p < alone.parts.size(); ++p) EXPECT_GT(alone_sizes[p], 0) << alone.parts[p].name;
 }
 
 }  // namespace
