@@ -241,13 +241,23 @@ std::vector<std::pair<int, int>> find_intersections_with(const std::vector<Vec3>
     if (q < 0 || q >= static_cast<int>(triangles.size()))
       throw ModelError("query triangle " + std::to_string(q) + " of " + std::to_string(triangles.size()));
   if (max_pairs == 0 || query.empty()) return {};
+  // Pairs within the query, then pairs between the query and the rest: each candidate once
+  // (a search of the query against all triangles finds the pairs within the query twice, and
+  // the query is most triangles after a smoothing pass).
+  std::vector<char> in_query(triangles.size(), 0);
+  for (int q : query) in_query[q] = 1;
+  std::vector<int> rest;
+  for (size_t t = 0; t < triangles.size(); ++t)
+    if (!in_query[t]) rest.push_back(static_cast<int>(t));
   std::vector<TriangleBox> query_boxes = finder.boxes(&query);
-  std::vector<TriangleBox> all = finder.boxes(nullptr);
+  std::vector<TriangleBox> rest_boxes = finder.boxes(&rest);
+  const auto report = [&finder](const TriangleBox& a, const TriangleBox& b) { finder.candidate(a.index, b.index); };
   try {
-    CGAL::box_intersection_d(
-        query_boxes.begin(), query_boxes.end(), all.begin(), all.end(),
-        [&finder](const TriangleBox& a, const TriangleBox& b) { finder.candidate(a.index, b.index); },
-        CGAL::Box_intersection_d::Box_traits_d<TriangleBox>(), kCutoff);
+    CGAL::box_self_intersection_d(query_boxes.begin(), query_boxes.end(), report,
+                                  CGAL::Box_intersection_d::Box_traits_d<TriangleBox>(), kCutoff);
+    if (!rest_boxes.empty())
+      CGAL::box_intersection_d(query_boxes.begin(), query_boxes.end(), rest_boxes.begin(), rest_boxes.end(), report,
+                               CGAL::Box_intersection_d::Box_traits_d<TriangleBox>(), kCutoff);
     finder.finish();
   } catch (const Abort&) {
   }

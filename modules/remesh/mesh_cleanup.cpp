@@ -1238,9 +1238,11 @@ int collapse_needles(Editor& e, double needle_angle, bool strict = false, const 
 // Flips the edge (u, v) inside one part when it improves the smallest angle of its two
 // triangles (or, `strict`, when it repairs a violation).
 bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
-  std::vector<int> edge;
-  e.edge_triangles(u, v, edge);
-  if (edge.size() != 2) return false;
+  // The triangles of edge (u, v), without allocating: this runs for every edge after every pass.
+  int edge[2], n = 0;
+  for (int t : e.star(u))
+    if (Editor::has(e.s_.triangles[t], v) && n++ < 2) edge[n - 1] = t;
+  if (n != 2) return false;
   int t1 = edge[0], t2 = edge[1];
   if (e.s_.triangle_part[t1] != e.s_.triangle_part[t2]) return false;
   if (!has_directed_edge(e.s_.triangles[t1], u, v)) std::swap(t1, t2);
