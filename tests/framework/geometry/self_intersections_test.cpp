@@ -84,6 +84,14 @@ TEST(SelfIntersections, FaultThroughAHorizonWithoutContactIsFound) {
     if (m.parts[t.part[f]].name == "fault") fault.push_back(static_cast<int>(f));
   EXPECT_EQ(find_intersections_with(m.vertices, t.triangles, fault), pairs);
   EXPECT_TRUE(find_intersections_with(m.vertices, t.triangles, {0}).empty());
+  // Pairs with both triangles in the query: the query holding both sides, or all triangles.
+  std::vector<int> both = fault, all;
+  for (size_t f = 0; f < t.triangles.size(); ++f) {
+    all.push_back(static_cast<int>(f));
+    if (m.parts[t.part[f]].name == "horizon") both.push_back(static_cast<int>(f));
+  }
+  EXPECT_EQ(find_intersections_with(m.vertices, t.triangles, both), pairs);
+  EXPECT_EQ(find_intersections_with(m.vertices, t.triangles, all), pairs);
 }
 
 TEST(SelfIntersections, AgreesWithAllPairsOnRandomTriangles) {
