@@ -1,6 +1,8 @@
 // `voroseal tetmesh MODEL -o OUT [--quality 1.5] [--min-dihedral 10] [--max-volume V]`:
 // tet-meshes the current model with TetGen, keeping its surfaces (conformal tets), sets
 // context.volume and report["tetmesh"], and writes the mesh when an output is given.
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +21,29 @@ namespace {
 
 // Wedges between surfaces up to this angle are looked for (thinnest_wedge_deg).
 constexpr double kWedgeReportDeg = 30.0;
+// Tets with a dihedral angle under this are nearly flat: finite-element and finite-volume
+// solvers fail on them or lose their accuracy there, so they are warned about.
+constexpr double kFlatTetDeg = 1.0;
+
+// The tets of `mesh` with a dihedral angle under kFlatTetDeg, and the flattest of them.
+struct FlatTets {
+  long count = 0;
+  long worst = -1;
+  double worst_deg = 180.0;
+};
+FlatTets find_flat_tets(const VolumeMesh& mesh) {
+  FlatTets flat;
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    const Tetrahedron& k = mesh.tets[t];
+    const std::array<double, 6> angles =
+        dihedral_angles_deg(mesh.vertices[k[0]], mesh.vertices[k[1]], mesh.vertices[k[2]], mesh.vertices[k[3]]);
+    const double smallest = *std::min_element(angles.begin(), angles.end());
+    if (smallest >= kFlatTetDeg) continue;
+    ++flat.count;
+    if (smallest < flat.worst_deg) flat.worst_deg = smallest, flat.worst = static_cast<long>(t);
+  }
+  return flat;
+}
 
 class TetmeshModule : public Module {
  public:
@@ -74,6 +99,7 @@ class TetmeshModule : public Module {
     auto mesh = std::make_shared<VolumeMesh>(tetrahedralize(model, options, context.log, &run));
     context.progress.finish();
     const VolumeQuality quality = measure_volume(*mesh);
+    const FlatTets flat = find_flat_tets(*mesh);
     const long nonconforming = static_cast<long>(model_triangles_not_in_tets(model, *mesh).size());
 
     nlohmann::json regions = nlohmann::json::array();
@@ -122,6 +148,7 @@ class TetmeshModule : public Module {
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},
+        {"flat_tets", flat.count},
         {"max_dihedral_deg", quality.max_dihedral_deg},
         {"max_radius_edge", quality.max_radius_edge},
         {"mean_radius_edge", quality.mean_radius_edge},
@@ -132,6 +159,23 @@ class TetmeshModule : public Module {
     context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
                      " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
                      std::to_string(quality.max_radius_edge));
+    if (flat.count > 0) {
+      const Tetrahedron& k = mesh->tets[flat.worst];
+      const Vec3 at = 0.25 * (mesh->vertices[k[0]] + mesh->vertices[k[1]] + mesh->vertices[k[2]] + mesh->vertices[k[3]]) +
+                      mesh->frame.origin;
+      const int region = mesh->tet_region[flat.worst];
+      const std::string in = region >= 0 && region < static_cast<int>(mesh->region_names.size())
+                                 ? " in " + mesh->region_names[region]
+                                 : std::string();
+      char what[320];
+      std::snprintf(what, sizeof what,
+                    "tetmesh: %ld nearly flat tets (a dihedral angle under %g deg; the flattest %.3g deg at "
+                    "(%.10g, %.10g, %.10g)%s): a solver may fail on them. ",
+                    flat.count, kFlatTetDeg, flat.worst_deg, at[0], at[1], at[2], in.c_str());
+      context.log.warning(std::string(what) +
+                          "They come from the surfaces (thin wedges, needle triangles, surfaces nearly touching "
+                          "without a contact)");
+    }
     if (!wedges.empty() && wedges.front().angle_deg < options.min_dihedral_deg) {
       const ContactWedge& w = wedges.front();
       const Vec3 at = 0.5 * (model.vertices[w.a] + model.vertices[w.b]) + model.frame.origin;

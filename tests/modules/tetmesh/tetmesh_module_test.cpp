@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
@@ -51,6 +53,29 @@ TEST(TetmeshModule, NoTetIsFlatterThanTheThinnestWedgeItReports) {
   context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
   module.run(context, Parameters(module.parameters(), {}));
   EXPECT_TRUE(context.report.at("tetmesh").at("thinnest_wedge_deg").is_null());
+}
+
+TEST(TetmeshModule, WarnsAboutNearlyFlatTets) {
+  // A pinch-out at 0.5 degrees: the tets along the pinch-out line are that flat.
+  std::FILE* log = std::tmpfile();
+  ASSERT_NE(log, nullptr);
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh", LogLevel::Warning, log);
+  const Module& module = harness.module;
+  Context& context = harness.context;
+  context.model = std::make_shared<StructuralModel>(build_model(test::pinch_out_prism(0.5)));
+  module.run(context, Parameters(module.parameters(), {}));
+  const auto& report = context.report.at("tetmesh");
+  EXPECT_LT(report.at("min_dihedral_deg").get<double>(), 0.5 + 1e-9);
+  EXPECT_GT(report.at("flat_tets").get<long>(), 0);
+  std::rewind(log);
+  std::string text(4096, '\0');
+  text.resize(std::fread(text.data(), 1, text.size(), log));
+  std::fclose(log);
+  EXPECT_NE(text.find("nearly flat tets"), std::string::npos) << text;
+  // At 3 degrees none is.
+  context.model = std::make_shared<StructuralModel>(build_model(test::pinch_out_prism(3.0)));
+  module.run(context, Parameters(module.parameters(), {}));
+  EXPECT_EQ(context.report.at("tetmesh").at("flat_tets").get<long>(), 0);
 }
 
 TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
