@@ -31,7 +31,7 @@ struct FlatTets {
   long worst = -1;
   double worst_deg = 180.0;
 };
-FlatTets find_flat_tets(const VolumeMesh& mesh) {
+FlatTets find_nearly_flat_tets(const VolumeMesh& mesh) {
   FlatTets flat;
   for (size_t t = 0; t < mesh.tets.size(); ++t) {
     const Tetrahedron& k = mesh.tets[t];
@@ -99,7 +99,7 @@ class TetmeshModule : public Module {
     auto mesh = std::make_shared<VolumeMesh>(tetrahedralize(model, options, context.log, &run));
     context.progress.finish();
     const VolumeQuality quality = measure_volume(*mesh);
-    const FlatTets flat = find_flat_tets(*mesh);
+    const FlatTets flat = find_nearly_flat_tets(*mesh);
     const long nonconforming = static_cast<long>(model_triangles_not_in_tets(model, *mesh).size());
 
     nlohmann::json regions = nlohmann::json::array();
@@ -148,7 +148,7 @@ class TetmeshModule : public Module {
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},
-        {"flat_tets", flat.count},
+        {"nearly_flat_tets", flat.count},
         {"max_dihedral_deg", quality.max_dihedral_deg},
         {"max_radius_edge", quality.max_radius_edge},
         {"mean_radius_edge", quality.mean_radius_edge},

@@ -66,7 +66,7 @@ TEST(TetmeshModule, WarnsAboutNearlyFlatTets) {
   module.run(context, Parameters(module.parameters(), {}));
   const auto& report = context.report.at("tetmesh");
   EXPECT_LT(report.at("min_dihedral_deg").get<double>(), 0.5 + 1e-9);
-  EXPECT_GT(report.at("flat_tets").get<long>(), 0);
+  EXPECT_GT(report.at("nearly_flat_tets").get<long>(), 0);
   std::rewind(log);
   std::string text(4096, '\0');
   text.resize(std::fread(text.data(), 1, text.size(), log));
@@ -75,7 +75,7 @@ TEST(TetmeshModule, WarnsAboutNearlyFlatTets) {
   // At 3 degrees none is.
   context.model = std::make_shared<StructuralModel>(build_model(test::pinch_out_prism(3.0)));
   module.run(context, Parameters(module.parameters(), {}));
-  EXPECT_EQ(context.report.at("tetmesh").at("flat_tets").get<long>(), 0);
+  EXPECT_EQ(context.report.at("tetmesh").at("nearly_flat_tets").get<long>(), 0);
 }
 
 TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
