@@ -2513,11 +2513,14 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
     report.flips += flip_edges(e, options.flip_flatness_deg);
   }
-  for (int i = 0; i < options.angle_passes; ++i) {
-    const int moved = optimize_angles(e, projector, 30.0);
-    if (moved == 0) break;
-    report.flips += flip_edges(e, options.flip_flatness_deg);
-  }
+  auto angle_passes = [&]() {
+    for (int i = 0; i < options.angle_passes; ++i) {
+      const int moved = optimize_angles(e, projector, 30.0);
+      if (moved == 0) break;
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+    }
+  };
+  angle_passes();
   // What the angle passes could not fix, an edge collapse sometimes does; then they go again.
   int collapsed = 0;
   for (int round = 0; round < options.sharp_collapse_rounds; ++round) {
@@ -2527,11 +2530,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     report.flips += flip_edges(e, options.flip_flatness_deg);
   }
   report.sharp_collapses += collapsed;
-  for (int i = 0; collapsed > 0 && i < options.angle_passes; ++i) {
-    const int moved = optimize_angles(e, projector, 30.0);
-    if (moved == 0) break;
-    report.flips += flip_edges(e, options.flip_flatness_deg);
-  }
+  if (collapsed > 0) angle_passes();
   // Last, as the angle passes trade shape for the smallest angle: each vertex goes where its
   // triangles are best shaped, no triangle getting sharper than 30 degrees.
   for (int i = 0; i < options.quality_passes; ++i) {

@@ -99,7 +99,8 @@ class TetmeshModule : public Module {
     auto mesh = std::make_shared<VolumeMesh>(tetrahedralize(model, options, context.log, &run));
     context.progress.finish();
     const VolumeQuality quality = measure_volume(*mesh);
-    const FlatTets flat = find_nearly_flat_tets(*mesh);
+    // The scan measures every tet again: only when some tet is that flat.
+    const FlatTets flat = quality.min_dihedral_deg < kFlatTetDeg ? find_nearly_flat_tets(*mesh) : FlatTets{};
     const long nonconforming = static_cast<long>(model_triangles_not_in_tets(model, *mesh).size());
 
     nlohmann::json regions = nlohmann::json::array();
