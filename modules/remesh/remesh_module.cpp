@@ -218,7 +218,12 @@ class RemeshModule final : public Module {
                         std::to_string(result.cleanup.intersections_left) + " intersecting triangle pairs, " +
                         std::to_string(result.cleanup.holes_left) +
                         " holes)" + (parameters.has("output") ? "; written for inspection" : ""));
-    if (parameters.has("tetmesh")) {
+    // TetGen on crossing surfaces fails, and through a hole it fills two regions as one: the
+    // volume mesh of an invalid model would only hide what went wrong.
+    if (parameters.has("tetmesh") && !valid) {
+      context.log.error("remesh: --tetmesh not run: the remeshed model is not valid");
+      report["tetmesh_skipped"] = true;
+    } else if (parameters.has("tetmesh")) {
       if (context.registry == nullptr) throw ParameterError("remesh --tetmesh: no module registry in this run");
       const Module& tetmesh = context.registry->get("tetmesh");
       tetmesh.run(context, Parameters(tetmesh.parameters(), {{"output", parameters.get_string("tetmesh")}}));

@@ -118,14 +118,20 @@ TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
   harness.context.model = std::make_shared<StructuralModel>(build_model(soup));
   const std::string out = (std::filesystem::temp_directory_path() / "voroseal_remesh_invalid_test.obj").string();
   std::filesystem::remove(out);
-  harness.module.run(harness.context, Parameters(harness.module.parameters(),
-                                                 {{"seeds", 400}, {"iterations", 20}, {"output", out}}));
+  const std::string tets = (std::filesystem::temp_directory_path() / "voroseal_remesh_invalid_test.mesh").string();
+  std::filesystem::remove(tets);
+  harness.module.run(harness.context,
+                     Parameters(harness.module.parameters(),
+                                {{"seeds", 400}, {"iterations", 20}, {"output", out}, {"tetmesh", tets}}));
   const nlohmann::json& r = harness.context.report.at("remesh");
   EXPECT_GT(r.at("cleanup").at("intersections_left").get<int>(), 0);
   EXPECT_FALSE(r.at("valid").get<bool>());
   EXPECT_EQ(harness.context.exit_code, 1);
   EXPECT_TRUE(std::filesystem::exists(out));
   std::filesystem::remove(out);
+  // Nor is a volume mesh made of it (the harness has no registry: asking for it would throw).
+  EXPECT_TRUE(r.at("tetmesh_skipped").get<bool>());
+  EXPECT_FALSE(std::filesystem::exists(tets));
 
   // The box and horizon alone remesh to a valid model.
   test::ModuleHarness clean(voroseal_register_remesh, "remesh");
