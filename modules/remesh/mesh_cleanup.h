@@ -38,7 +38,7 @@ struct CleanupOptions {
   int sharp_collapse_rounds = 4;
   /// Passes moving the vertices of triangles with Q below `quality_below` to where the sum of Q
   /// of their triangles is largest, none of them getting sharper than 30 degrees (after the
-  /// angle passes; see optimize_quality in mesh_cleanup.cpp).
+  /// angle passes; see optimize_quality in cleanup_steps.h).
   int quality_passes = 4;
   double quality_below = 0.9;
   /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
@@ -63,7 +63,7 @@ struct CleanupReport {
   int intersections_found = 0;  // intersecting triangle pairs before they were resolved
   int intersections_left = 0;   // pairs that could not be resolved
   int holes_left = 0;           // edges with one triangle where the input has no free border
-  int leaks_left = 0;           // edges whose radial order mixes input regions (see mesh_cleanup.cpp)
+  int leaks_left = 0;           // edges whose radial order mixes input regions (see cleanup_editor.h)
   int degenerate_left = 0;      // collinear triangles
   int pinches_left = 0;         // vertices where a part touches itself (extra fans)
   int folds_left = 0;           // wedges of a few degrees at contact edges (a triangle on another part)

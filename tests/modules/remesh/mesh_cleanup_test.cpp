@@ -120,9 +120,12 @@ TEST(MeshCleanup, QualityPassesRaiseTheMeanQWithoutSharperTriangles) {
   EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left, 0);
   for (size_t v = 0; v < optimised.vertices.size(); ++v) {
     const VertexFeature f = optimised.features[v];
-    if (f.kind == VertexFeature::Surface) EXPECT_LT(projector.distance_to_part(f.id, optimised.vertices[v]), 1e-9);
-    if (f.kind == VertexFeature::Contact)
+    if (f.kind == VertexFeature::Surface) {
+      EXPECT_LT(projector.distance_to_part(f.id, optimised.vertices[v]), 1e-9);
+    }
+    if (f.kind == VertexFeature::Contact) {
       EXPECT_LT((projector.on_contact(f.id, optimised.vertices[v]) - optimised.vertices[v]).norm(), 1e-9);
+    }
   }
 }
 

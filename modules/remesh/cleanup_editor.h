@@ -1,0 +1,405 @@
+// The Editor of the clean-up: the remeshed surface with vertex -> triangle incidence, edited
+// in place inside transactions, and what makes it invalid as a structural model (Violations),
+// measured around each edit. Internal to the remesh module (see mesh_cleanup.h).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "framework/geometry/self_intersections.h"
+#include "framework/geometry/triangle_quality.h"
+#include "framework/model/structural_model.h"
+#include "framework/model/triangle_topology.h"
+#include "modules/remesh/remeshed_surface.h"
+#include "modules/remesh/surface_projection.h"
+#include "modules/remesh/triangle_grid.h"
+
+namespace voroseal::cleanup {
+
+inline Vec3 normal_of(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+// What makes the remeshed surfaces invalid as a structural model, counted around a few
+// triangles. Every edit of the clean-up is checked against it (see Editor::acceptable): an edit that
+// makes it worse is undone, so the clean-up never opens a sealed surface, never changes which
+// input region lies on which side of a triangle, and never makes triangles cross.
+struct Violations {
+  int holes = 0;       // edges with one triangle on a part that must not end there
+  int leaks = 0;       // edges where a wedge between consecutive triangles (radial order) has
+                       // different input regions on its two sides, or two triangles of one part
+                       // disagree in orientation: the output regions would not be the input's
+  int crossings = 0;   // pairs of triangles that intersect (exact predicates)
+  int degenerate = 0;  // triangles with collinear vertices
+  int pinches = 0;     // extra fans of a part around a vertex (the part touches itself there)
+  int folds = 0;       // wedges thinner than kFoldDeg between consecutive triangles around a
+                       // contact edge (a triangle lying on another part), or between the two
+                       // triangles of a part's edge (a pleat): a volume of no thickness there
+                       // (and flat tetrahedra in any volume mesh)
+  int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
+};
+
+// The input's contacts meet at wedges of several degrees; thinner wedges are made by the remesh.
+constexpr double kFoldDeg = 5.0;
+// Triangles with a larger angle, or a smaller one, are as bad as degenerate ones.
+constexpr double kCapDeg = 170.0;
+constexpr double kNeedleDeg = 5.0;
+
+// The surface with vertex -> triangle incidence, edited in place. Edits happen inside
+// transactions (begin / commit / rollback) so that an edit can be tried, measured and undone.
+// Dead triangles are removed at the end (finish()).
+class Editor {
+ public:
+  Editor(RemeshedSurface& s, const StructuralModel& input);
+
+  // The exact tests here must see the coordinates that `voroseal check` reads back. Files hold
+  // local + frame origin, and a reader subtracts its own origin (an integer), both rounded: on
+  // folded or flat parts a pair can then cross in the file and not here (remeshed geogen
+  // thin_layers: 4 pairs here, 18 in the file). Positions are kept on a grid in file
+  // coordinates, the finest (about 2^-51 of the model's extent) on which adding or subtracting
+  // any integer origin up to the model's extent is exact.
+  Vec3 snapped(const Vec3& x) const {
+    const Vec3& origin = input_.frame.origin;
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = std::nearbyint((x[i] + origin[i]) / step_) * step_ - origin[i];
+    return out;
+  }
+
+  RemeshedSurface& s_;
+  const StructuralModel& input_;
+  std::vector<std::pair<int, int>> part_regions_;
+  std::vector<std::vector<int>> around_;  // may hold stale entries: read through star()
+  std::vector<char> dirty_;               // around_[v] may hold stale entries
+  std::vector<char> dead_;
+  double mean_edge_ = 1.0;
+  double step_ = 0.0;  // of the file-coordinate grid, see snapped()
+  const SurfaceProjector* projector_ = nullptr;  // for flips across folds (see try_flip)
+  double tolerance_ = 0.0;                       // the fidelity tolerance
+
+  // ---- geometry ----
+  const Vec3& p(int v) const { return s_.vertices[v]; }
+  Vec3 normal(int t) const {
+    const Triangle& f = s_.triangles[t];
+    return normal_of(p(f[0]), p(f[1]), p(f[2]));
+  }
+  double min_angle(int t) const {
+    const Triangle& f = s_.triangles[t];
+    return min_angle_deg(p(f[0]), p(f[1]), p(f[2]));
+  }
+  bool alive(int t) const { return !dead_[t]; }
+  // The edges (f[i], f[i + 1]) of a triangle, i shortest first (ties keep the order of i).
+  std::array<int, 3> edges_by_length(const Triangle& f) const {
+    std::array<std::pair<double, int>, 3> edges;
+    for (int i = 0; i < 3; ++i) edges[i] = {(p(f[i]) - p(f[(i + 1) % 3])).squaredNorm(), i};
+    std::sort(edges.begin(), edges.end());
+    return {edges[0].second, edges[1].second, edges[2].second};
+  }
+  static bool has(const Triangle& f, int v) { return f[0] == v || f[1] == v || f[2] == v; }
+  static int opposite(const Triangle& f, int u, int v) {
+    for (int w : f)
+      if (w != u && w != v) return w;
+    return -1;
+  }
+
+  // ---- incidence ----
+  // Alive triangles with vertex v (the list is tidied first).
+  const std::vector<int>& star(int v) {
+    auto& list = around_[v];
+    if (!dirty_[v]) return list;
+    dirty_[v] = 0;
+    list.erase(std::remove_if(list.begin(), list.end(),
+                              [&](int t) { return dead_[t] != 0 || !has(s_.triangles[t], v); }),
+               list.end());
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    return list;
+  }
+  // The triangles of `part` around v when they close a fan around it (every neighbour in two of
+  // them), else 0.
+  int closed_fan_size(int v, int part);
+
+  // The triangles `tris` of edge (a, b) in radial order (radial_fan()); false, `fan` empty,
+  // when the edge or a triangle is degenerate (an apex on the edge's line has no angle).
+  bool radial_order(int a, int b, const std::vector<int>& tris, std::vector<FanBlade>& fan) const {
+    fan.clear();
+    const Vec3 axis = p(b) - p(a);
+    if (axis.squaredNorm() == 0) return false;
+    for (int t : tris)
+      if (axis.cross(p(opposite(s_.triangles[t], a, b)) - p(a)).squaredNorm() == 0) return false;
+    radial_fan(s_.vertices, s_.triangles, a, b, tris.data(), static_cast<int>(tris.size()), fan);
+    return true;
+  }
+
+  // Alive triangles containing edge (u, v).
+  void edge_triangles(int u, int v, std::vector<int>& out) {
+    out.clear();
+    for (int t : star(u))
+      if (has(s_.triangles[t], v)) out.push_back(t);
+  }
+  bool edge_exists(int u, int v) {
+    for (int t : star(u))
+      if (has(s_.triangles[t], v)) return true;
+    return false;
+  }
+  // A contact edge of the output: not exactly two triangles, or two of different parts.
+  bool is_line_edge(int u, int v) {
+    std::vector<int> e;
+    edge_triangles(u, v, e);
+    return e.size() != 2 || s_.triangle_part[e[0]] != s_.triangle_part[e[1]];
+  }
+  void neighbours(int v, std::vector<int>& out) {
+    out.clear();
+    for (int t : star(v))
+      for (int w : s_.triangles[t])
+        if (w != v) out.push_back(w);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  // Union of the stars of `vertices`, sorted.
+  void stars(const std::vector<int>& vertices, std::vector<int>& out) {
+    out.clear();
+    for (int v : vertices)
+      for (int t : star(v)) out.push_back(t);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+
+  // ---- edits (journaled inside a transaction) ----
+  void begin() {
+    journal_.clear();
+    open_ = true;
+  }
+  void commit() {
+    journal_.clear();
+    open_ = false;
+  }
+  void rollback();
+  // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
+  void move(int v, const Vec3& x, bool update_grid = true) {
+    if (open_) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0});
+    s_.vertices[v] = snapped(x);
+    if (update_grid)
+      for (int t : star(v)) grid_insert(t);
+  }
+  void set_triangle(int t, const Triangle& f) {
+    save(t);
+    for (int w : s_.triangles[t]) dirty_[w] = 1;
+    s_.triangles[t] = f;
+    for (int w : f) {
+      around_[w].push_back(t);
+      dirty_[w] = 1;
+    }
+    grid_insert(t);
+  }
+  void kill(int t) {
+    save(t);
+    dead_[t] = 1;
+    for (int w : s_.triangles[t]) dirty_[w] = 1;
+  }
+  int add_triangle(const Triangle& f, int part) {
+    const int t = static_cast<int>(s_.triangles.size());
+    s_.triangles.push_back(f);
+    s_.triangle_part.push_back(part);
+    dead_.push_back(0);
+    for (int v : f) {
+      around_[v].push_back(t);
+      dirty_[v] = 1;
+    }
+    if (open_) journal_.push_back({Change::Added, t, Vec3::Zero(), f, part, 0});
+    grid_insert(t);
+    return t;
+  }
+  // Vertices are never removed while editing (unused ones go at finish()).
+  int add_vertex(const Vec3& x, const VertexFeature& feature) {
+    s_.vertices.push_back(snapped(x));
+    s_.features.push_back(feature);
+    around_.emplace_back();
+    dirty_.push_back(0);
+    return static_cast<int>(s_.vertices.size()) - 1;
+  }
+
+  void finish() { s_.remove_triangles(dead_); }
+
+  bool corner_ends_contact(int corner, int contact) const {
+    const auto& c = input_.contacts[contact].corners;
+    return c[0] == corner || c[1] == corner;
+  }
+
+  // ---- validity ----
+  void rebuild_grid() {
+    grid_.reset(2.0 * mean_edge_);
+    for (size_t t = 0; t < s_.triangles.size(); ++t)
+      if (!dead_[t]) grid_insert(static_cast<int>(t));
+  }
+
+  // Violations on the edges of `triangles` and between `triangles` and any other triangle.
+  Violations violations(const std::vector<int>& triangles);
+
+  // An edit may keep its changes when it makes nothing worse (`strict`: when it repairs).
+  static bool acceptable(const Violations& before, const Violations& after, bool strict) {
+    if (after.holes > before.holes || after.leaks > before.leaks) return false;
+    return strict ? after.total() < before.total() : after.total() <= before.total();
+  }
+
+  // Every violation of the whole surface, listed (pairs and edges sorted), for the repair pass
+  // and for checking a batch of moves.
+  struct Census {
+    std::vector<std::pair<int, int>> crossings;  // triangle pairs
+    std::vector<std::pair<int, int>> edges;      // edges (a < b) with a hole or a leak
+    std::vector<int> degenerate;                 // triangles
+    std::vector<int> pinched;                    // vertices
+    Violations count;
+    // The triangles involved in any violation.
+    std::vector<int> triangles(Editor& e) const;
+  };
+  // Holes, leaks and folds on edge (a, b) into a census.
+  void add_edge_violations(int a, int b, Census& c) {
+    Violations v;
+    edge_violations(a, b, v);
+    if (v.holes + v.leaks + v.folds > 0) c.edges.push_back({a, b});
+    c.count.holes += v.holes;
+    c.count.leaks += v.leaks;
+    c.count.folds += v.folds;
+  }
+  // The violations with a triangle that has a vertex marked in `moved` (counts included), for
+  // checking a batch of moves: no other triangle can have changed.
+  Census census_around(const std::vector<char>& moved);
+
+  // `topology`: also the pinches (edits that move vertices only cannot change them).
+  Census census(bool topology = true);
+
+  // Alive triangles whose bounding box meets [lo, hi] (each once).
+  template <class F>
+  void candidates(const Vec3& lo, const Vec3& hi, F&& f) {
+    ++query_epoch_;
+    if (seen_.size() < s_.triangles.size()) seen_.resize(s_.triangles.size() + 1024, 0);
+    grid_.query(lo, hi, [&](int c) {
+      if (dead_[c] || seen_[c] == query_epoch_) return;
+      seen_[c] = query_epoch_;
+      Vec3 clo, chi;
+      box(c, clo, chi);
+      if ((clo.array() > hi.array()).any() || (chi.array() < lo.array()).any()) return;
+      f(c);
+    });
+  }
+
+  // Holes and leaks on one edge.
+  Violations edge_check(int a, int b) {
+    Violations v;
+    edge_violations(a, b, v);
+    return v;
+  }
+
+  bool may_end(int part) const {
+    const auto [plus, minus] = part_regions_[part];
+    return plus == minus || plus < -1 || minus < -1;
+  }
+
+ private:
+  struct Change {
+    enum Kind { Moved, Changed, Added };
+    Kind kind;
+    int index;
+    Vec3 position;
+    Triangle triangle;
+    int part;
+    char dead;
+  };
+  void save(int t) {
+    if (open_) journal_.push_back({Change::Changed, t, Vec3::Zero(), s_.triangles[t], s_.triangle_part[t], dead_[t]});
+  }
+  void box(int t, Vec3& lo, Vec3& hi) const {
+    const Triangle& f = s_.triangles[t];
+    lo = p(f[0]).cwiseMin(p(f[1])).cwiseMin(p(f[2]));
+    hi = p(f[0]).cwiseMax(p(f[1])).cwiseMax(p(f[2]));
+  }
+  void grid_insert(int t) {
+    Vec3 lo, hi;
+    box(t, lo, hi);
+    grid_.insert(t, lo, hi);
+  }
+  bool degenerate(int t) const { return is_degenerate(s_.vertices, s_.triangles[t]); }
+  // Nearly flat (a cap or a needle of a tiny edge): counted with the degenerate triangles, as a
+  // tet mesh keeping it has a flat tet, though its crossings can still be tested.
+  bool cap(int t) const {
+    const Triangle& f = s_.triangles[t];
+    const TriangleQuality q = measure_triangle(p(f[0]), p(f[1]), p(f[2]));
+    return q.max_angle_deg > kCapDeg || q.min_angle_deg < kNeedleDeg;
+  }
+  // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
+  // vertices on the same side). With opposite directions along the edge (consistent
+  // orientation) and normals clearly on the same side they cannot: a cheap answer for the
+  // commonest pair, whose exact test is slow on flat parts (exactly coplanar triangles).
+  bool adjacent_apart(int t, int c) const {
+    const Triangle &a = s_.triangles[t], &b = s_.triangles[c];
+    int shared = 0, u = -1, v = -1;
+    for (int i = 0; i < 3; ++i)
+      if (has(b, a[i])) {
+        ++shared;
+        (u < 0 ? u : v) = a[i];
+      }
+    if (shared != 2) return false;
+    if (has_directed_edge(a, u, v) == has_directed_edge(b, u, v)) return false;
+    const Vec3 na = normal(t), nb = normal(c);
+    return na.dot(nb) > 0.01 * na.norm() * nb.norm();
+  }
+
+  // Extra fans around v: the triangles of one part around v, linked across the edges (v, w) that
+  // have exactly two triangles of that part, form one fan in a manifold part.
+  int pinches(int v);
+
+  // Two triangles of a part sharing an edge, the part turning back onto itself across it
+  // (normals nearly opposite): a pleat, a fold of the part.
+  bool pleat(int t0, int t1) const {
+    const Vec3 n0 = normal(t0), n1 = normal(t1);
+    return n0.dot(n1) < -std::cos(kFoldDeg * M_PI / 180.0) * n0.norm() * n1.norm();
+  }
+
+  // Holes, leaks and folds on edge (a, b), see Violations.
+  void edge_violations(int a, int b, Violations& out);
+
+  std::vector<Change> journal_;
+  bool open_ = false;
+  TriangleGrid grid_;
+  std::vector<int> mark_, seen_;
+  int epoch_ = 0, query_epoch_ = 0;
+  std::vector<std::pair<int, int>> edges_;
+  std::vector<int> fan_tris_, verts_, ring_;
+  std::vector<FanBlade> fan_;
+  std::vector<std::pair<int, int>> fan_count_;
+};
+
+// Applies an edit as a transaction: `affected_before` gives the triangles whose violations the
+// edit may change (before it), `edit` performs it and returns the triangles affected after it
+// (or false to give up). The edit is kept when Editor::acceptable().
+//
+// The edit is measured first: when it leaves no violation around it is kept at once (nothing
+// can be worse than none), which spares measuring most edits twice; otherwise it is undone, the
+// surroundings measured as they were, and the edit done again if it is acceptable. Edits are
+// deterministic, so doing one again gives the same result.
+template <class Edit>
+bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, Edit&& edit) {
+  std::vector<int> affected_after;
+  e.begin();
+  if (!edit(affected_after)) {
+    e.rollback();
+    return false;
+  }
+  const Violations after = e.violations(affected_after);
+  if (after.total() == 0 && !strict) {
+    e.commit();
+    return true;
+  }
+  e.rollback();
+  const Violations before = e.violations(affected_before);
+  if (!Editor::acceptable(before, after, strict)) return false;
+  e.begin();
+  affected_after.clear();
+  edit(affected_after);
+  e.commit();
+  return true;
+}
+
+
+}  // namespace voroseal::cleanup

@@ -1,0 +1,166 @@
+// Fidelity: splits where the remesh strays from the input by more than a tolerance.
+#include "modules/remesh/cleanup_steps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "framework/geometry/closest_point.h"
+#include "framework/geometry/surface_distance.h"
+#include "framework/geometry/triangle_quality.h"
+
+namespace voroseal::cleanup {
+
+namespace {
+
+// The contact a line edge (u, v) follows, for the fidelity check: the contact both sample, or,
+// between a contact vertex and a corner that does not end its contact (corners merged because
+// the resolution is coarse, paper Fig. 11b), that contact: its input vertices between the two
+// (the corner merged away among them) are then checked too.
+int fidelity_contact(const Editor& e, int u, int v) {
+  const int c = shared_contact(e, u, v);
+  if (c >= 0) return c;
+  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner) return fu.id;
+  if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner) return fv.id;
+  return -1;
+}
+
+}  // namespace
+
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const ContactArcs& arcs, double tolerance) {
+  if (tolerance <= 0.0) return 0;
+  int splits = 0;
+  const size_t n = e.s_.triangles.size();
+  std::vector<int> tris;
+  for (size_t ti = 0; ti < n; ++ti) {
+    const int t = static_cast<int>(ti);
+    if (!e.alive(t)) continue;
+    const Triangle f = e.s_.triangles[t];
+    bool done = false;
+    for (int i = 0; i < 3 && !done; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      if (!e.is_line_edge(u, v)) continue;
+      const int c = fidelity_contact(e, u, v);
+      if (c < 0) continue;
+      double distance = 0.0;
+      const int x =
+          arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)), e.p(u), e.p(v), &distance);
+      if (x < 0 || distance <= tolerance) continue;
+      // The bend is kept by a vertex there. Close to an end (a third of the edge), that end moves
+      // there rather than leave a short edge (needles in every part along the contact).
+      const Vec3& bend = e.input_.vertices[x];
+      const double len = (e.p(v) - e.p(u)).norm();
+      int end = -1;
+      for (int w : {u, v}) {
+        const VertexFeature& fw = e.s_.features[w];
+        if (fw.kind == VertexFeature::Contact && fw.id == c && !fw.pinned && (bend - e.p(w)).norm() < len / 3) end = w;
+      }
+      if (end >= 0) {
+        const std::vector<int> ring = e.star(end);
+        bool folds = false;
+        for (int r : ring) {
+          Triangle f2 = e.s_.triangles[r];
+          Vec3 q[3];
+          for (int i2 = 0; i2 < 3; ++i2) q[i2] = f2[i2] == end ? bend : e.p(f2[i2]);
+          folds = folds || normal_of(q[0], q[1], q[2]).dot(e.normal(r)) <= 0;
+        }
+        if (!folds && transact(e, ring, false, [&](std::vector<int>& after) {
+              e.move(end, bend);
+              after = ring;
+              return true;
+            })) {
+          e.s_.features[end].pinned = true;
+          ++splits;
+          done = true;
+          continue;
+        }
+      }
+      if (try_split(e, u, v, bend, {VertexFeature::Contact, c, true})) {
+        ++splits;
+        done = true;
+      }
+    }
+    if (done || !e.alive(t)) continue;
+    const int part = e.s_.triangle_part[t];
+    const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
+    if ((projector.on_part(part, centroid) - centroid).norm() <= tolerance) continue;
+    // Split the longest edge inside the part, at its middle moved onto the part.
+    int best = -1;
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      e.edge_triangles(u, v, tris);
+      if (tris.size() != 2 || e.s_.triangle_part[tris[0]] != e.s_.triangle_part[tris[1]]) continue;
+      const double len = (e.p(u) - e.p(v)).squaredNorm();
+      if (len > longest) {
+        longest = len;
+        best = i;
+      }
+    }
+    if (best < 0) continue;
+    const int u = f[best], v = f[(best + 1) % 3];
+    if (try_split(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part})) ++splits;
+  }
+  return splits;
+}
+
+int refine_toward_input(Editor& e, double tolerance) {
+  if (tolerance <= 0.0) return 0;
+  const StructuralModel& in = e.input_;
+  std::vector<int> part_of(in.vertices.size(), -1);
+  for (size_t p = 0; p < in.parts.size(); ++p)
+    for (int v : in.parts[p].model_vertex) part_of[v] = part_of[v] == -1 ? static_cast<int>(p) : -2;
+  for (const Contact& c : in.contacts)
+    for (int v : c.vertices) part_of[v] = -2;
+  std::vector<Triangle> tris;
+  std::vector<int> index;
+  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+    if (e.alive(static_cast<int>(t))) {
+      tris.push_back(e.s_.triangles[t]);
+      index.push_back(static_cast<int>(t));
+    }
+  if (tris.empty()) return 0;
+  const TriangleSetDistance distance(e.s_.vertices, tris);
+  std::vector<std::pair<double, int>> far;
+  for (size_t v = 0; v < in.vertices.size(); ++v) {
+    if (part_of[v] < 0) continue;
+    const double d2 = distance.squared_distance(in.vertices[v]);
+    if (d2 > tolerance * tolerance) far.emplace_back(std::sqrt(d2), static_cast<int>(v));
+  }
+  std::sort(far.rbegin(), far.rend());
+  std::vector<char> split_once(e.s_.triangles.size(), 0);
+  int inserted = 0;
+  for (const auto& [d, v] : far) {
+    const Vec3& x = in.vertices[v];
+    const int part = part_of[v];
+    // Still far (an earlier insertion may have come close)?
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    const Vec3 reach = Vec3::Constant(2.0 * d + e.mean_edge_);
+    e.candidates(x - reach, x + reach, [&](int t) {
+      const Triangle& f = e.s_.triangles[t];
+      const double d2 = squared_distance_to_triangle(x, e.p(f[0]), e.p(f[1]), e.p(f[2]));
+      if (d2 < tolerance * tolerance) best_d2 = -1;  // close enough now, whichever part
+      if (best_d2 >= 0 && e.s_.triangle_part[t] == part && d2 < best_d2) {
+        best_d2 = d2;
+        best = t;
+      }
+    });
+    if (best_d2 < 0 || best < 0 || (best < static_cast<int>(split_once.size()) && split_once[best])) continue;
+    const Triangle f = e.s_.triangles[best];
+    const int w = e.add_vertex(x, {VertexFeature::Surface, part, true});
+    if (transact(e, {best}, false, [&](std::vector<int>& after) {
+          e.kill(best);
+          for (int i = 0; i < 3; ++i) after.push_back(e.add_triangle({f[i], f[(i + 1) % 3], w}, part));
+          return true;
+        })) {
+      if (best < static_cast<int>(split_once.size())) split_once[best] = 1;
+      ++inserted;
+    }
+  }
+  return inserted;
+}
+
+}  // namespace voroseal::cleanup

@@ -1,0 +1,207 @@
+// The steps of the clean-up (mesh_cleanup.h), each a pass of checked edits of the Editor
+// (cleanup_editor.h). Internal to the remesh module: clean_up() runs them in order.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "modules/remesh/cleanup_editor.h"
+#include "modules/remesh/contact_arcs.h"
+#include "modules/remesh/mesh_cleanup.h"
+#include "modules/remesh/surface_projection.h"
+
+namespace voroseal::cleanup {
+
+// ---- edits (cleanup_edits.cpp) ----
+
+// Interior (surface) vertex with exactly three triangles of one part around it, closed fan.
+int remove_valence3(Editor& e);
+
+// A flip of the edge (x, y) facing v in its triangle t = (v, x, y): t and the triangle
+// (y, x, o) of the same part beyond the edge would become (v, x, o) and (v, o, y). False when
+// the edge is a contact edge, o is v, or a new triangle would face away from the two it
+// replaces. Whether the new edge (v, o) may exist elsewhere is the caller's call.
+struct OppositeFlip {
+  int out = -1;  // the triangle beyond the edge
+  int o = -1;    // its far vertex
+  Triangle g1{}, g2{};
+  double min_angle = 0.0;  // smallest angle of g1 and g2
+};
+
+bool opposite_flip(Editor& e, int v, int t, OppositeFlip& flip);
+
+// Makes the flip: t and flip.out become flip.g1 and flip.g2, whose ids go to `added`.
+void apply_flip(Editor& e, int t, const OppositeFlip& flip, std::vector<int>* added = nullptr);
+
+// Vertices on contacts cannot go, but a part that runs on across the contact (a horizon ending
+// on a fault: the fault part holds the contact) may close a fan of three triangles around one.
+// On a flat part that fan is a dent or a bump that no tet mesh keeping the surface fills
+// without a flat tetrahedron (remeshed CloudSpin_fixed: 0.03°). Flipping a side of the fan,
+// toward the best-shaped pair, gives the vertex four triangles there.
+int raise_valence3_on_contacts(Editor& e);
+
+// Whether u may collapse into v: the features allow it, the link condition holds and no
+// triangle folds over or becomes a sliver. No triangle may come out with a smallest angle below
+// min(its angle before, `floor_deg`): a collapse never turns good triangles into needles (which
+// would let collapses cascade).
+bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing);
+
+// The collapse itself: the triangles of edge (u, v) go, u becomes v in the others.
+void collapse(Editor& e, int u, int v);
+
+// The contact both u and v sample (a contact vertex's contact, or the one a corner ends that the
+// other vertex lies on), -1 when none.
+int shared_contact(const Editor& e, int u, int v);
+
+// The contact the line edge (u, v) samples: the one whose parts are the edge's. Between two
+// corners that both end several contacts (a thin strip pinched at both ends) shared_contact()
+// cannot tell which, and after merges an end may carry the feature of the contact it was merged
+// into; the edge's parts tell (the nearest of the contacts with those parts). Else
+// shared_contact().
+int line_contact(Editor& e, const SurfaceProjector& projector,
+                 const std::map<std::vector<int>, std::vector<int>>& contacts_by_parts, int u, int v);
+
+// Splits edge (u, v) at vertex w in every triangle that has it, keeping orientations; the new
+// triangles are appended to `added`.
+void split(Editor& e, int u, int v, int w, std::vector<int>* added = nullptr);
+
+// Collapses u into v when collapse_allowed() and the validity of the surface gets no worse
+// (`strict`: better).
+bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0, bool strict = false);
+
+// Collapses the shortest possible edge of triangles with an angle below `needle_angle` and of
+// the folds along contacts (on_one_contact).
+int collapse_needles(Editor& e, double needle_angle, bool strict = false, const std::vector<int>* only = nullptr);
+
+// Flips the edge (u, v) inside one part when it improves the smallest angle of its two
+// triangles (or, `strict`, when it repairs a violation).
+bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict);
+
+int flip_edges(Editor& e, double flatness_deg);
+
+// Whether w follows contact vertex v along v's contact: a vertex of that contact, or a corner
+// ending it, joined to v by a contact edge.
+bool along_contact(Editor& e, int v, int w);
+
+// Moves v to x when the validity of its ring allows it (one checked edit).
+bool move_checked(Editor& e, int v, const Vec3& x);
+
+// Whether moving v to x leaves every triangle of its ring facing the way it did, and not flat
+// (its normal keeps at least 1e-3 of its length).
+bool ring_unfolded_at(Editor& e, int v, const Vec3& x);
+
+// Where a move of v toward `target` (then back onto its feature) ends: the full step, else half,
+// else a quarter, the first that folds no triangle of its ring. False when none does.
+bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, double step,
+                   Vec3& result);
+
+// Moves v toward `target` when the validity allows it (see unfolded_move()).
+bool try_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, bool strict);
+
+// Splits edge (u, v) at new vertex x in every triangle that has it, when the validity gets no
+// worse.
+bool try_split(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feature);
+
+// Flips the edges of `part` opposite v whose two triangles get a larger smallest angle by it,
+// where a triangle of v has one below `floor_deg` (after v was inserted into the part). The far
+// vertices of the flips are added to `touched`.
+void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>& touched);
+
+// ---- merges (cleanup_merges.cpp) ----
+
+// Features closer than d_min merge (paper Fig. 11c-d), which removes small fault throws and
+// joins fault tips to the contact next to them:
+//  - a "rung", an edge shorter than d_min between two features (contacts, corners), collapses;
+//  - a strip triangle, whose base is an edge of one contact and whose apex samples another feature
+//    closer than d_min to the base, is zipped: the base is split at the foot of the apex and the
+//    foot collapsed into the apex, so that the two contacts run together there.
+// A thin strip between two contacts (a small fault throw) is a chain of strip triangles; zipping
+// one alone would pinch the strip at a point (its part would touch itself there), so the
+// candidates of a stretch (candidates whose triangles share edges) are merged together, in one
+// edit checked as a whole; a stretch whose whole edit is refused is tried candidate by candidate.
+// A part loses its last triangles this way only when another part still separates the two
+// regions it separates (a fault strip thinner than d_min between the two cut-offs of a horizon,
+// CloudSpin's Cyan_ts/3, 2 m wide), so the regions keep their neighbours.
+void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report);
+
+// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it, and
+// any tet mesh keeping the surfaces fills the gap with tets about as flat as the gap is thin
+// against the triangles around it (remeshed CloudSpin_fixed at 10,000 seeds: a fault tip 19 m
+// from the next fault at the end of a 362 m edge, a 1.9 deg tet). Closer than d_min, the tip
+// joins the part (paper Fig. 11c-d, a fault tip joins the fault next to it): a free border
+// vertex v next to a vertex a of the part, whose gap d to the part is less than tan(max_wedge)
+// times the larger of |av| and the part's triangle under v, moves to the closest point of the
+// part's triangles around a or next to them and is inserted there (pinned), and (a, v) becomes
+// a contact edge, made in the part by a flip when v landed next to a's triangles. A join may
+// bring the next border vertex in. It is refused when it leaves a needle, a wedge thinner than
+// max_wedge at the new contact edge, or a free edge of v leaving the part at less than twice
+// max_wedge beyond d_min (the gap would only move on), and when v would keep no free edge
+// toward a vertex off the part: a free border never closes entirely (that might cut a region
+// in two) and never lies along the part with both ends on it (a gap of no thickness).
+int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report);
+
+// ---- shape (cleanup_shape.cpp) ----
+
+// Where smoothing would move vertex v: surface vertices toward the area-weighted centroid of
+// their ring within the tangent plane, contact vertices toward the middle of their two contact
+// neighbours. False when v stays.
+bool smoothing_target(Editor& e, int v, Vec3& target);
+
+// One Gauss-Seidel pass of tangential smoothing (see smoothing_target()). Moves that fold no
+// triangle of their ring are made, then the moved triangles are checked at once, which is much
+// cheaper than checking every move: the vertices of triangles in a violation the pass made are
+// put back where they were, until the pass made none.
+void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr);
+
+// Smallest angle of the triangles around v with v at x.
+double ring_min_angle(Editor& e, int v, const Vec3& x);
+
+// Moves the vertices of triangles with an angle below `angle_deg` to where their ring's smallest
+// angle is largest (angle_target()). They are few: each move is checked on its own.
+int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_deg);
+
+// The mean Q of the output is what the smoothing (toward the centroid of the ring) leaves
+// furthest from good next to contacts, where the ring is lopsided. The vertices of triangles with
+// Q below `q_below` move to where the sum of Q around them is largest among a few candidates on
+// their feature (toward and away from each neighbour; along the contact for contact vertices),
+// no triangle of theirs getting sharper than 30 degrees nor than the sharpest one there.
+// Remeshed CloudSpin_fixed at 5,000 seeds: mean Q 0.859 -> 0.881. Returns the moves made.
+int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_below);
+
+// Collapses an edge of a triangle with an angle below `angle_deg` (its shortest possible one)
+// when that leaves fewer such triangles around the edge, or as many with the sharpest one 5 deg
+// less sharp. What the angle passes leave is mostly triangles no vertex move fixes: a short
+// contact edge between close contact points, a short rung across a thin strip; one vertex less
+// there often does. A collapse never makes a triangle sharper than min(its angle, 12 deg)
+// (collapse_allowed), nor the surfaces less valid, nor the remesh stray from the input by more
+// than the fidelity tolerance (where u was, and at the middles of the triangles around).
+int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_deg);
+
+// ---- wedges (cleanup_wedges.cpp) ----
+
+// Moves the vertices of wedge tets flatter than `bound_deg` (their edge's and apexes') to where
+// the flattest wedge tet around them is least flat, among the candidates of angle_target(),
+// when their triangles keep a smallest angle of min(theirs, 20°). Each move is checked on its own.
+int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_deg);
+
+// ---- fidelity (cleanup_fidelity.cpp) ----
+
+// Splits contact edges whose chord leaves the input contact by more than `tolerance` (at the
+// farthest input vertex, kept in place), and surface edges of triangles whose middle lies
+// farther than `tolerance` from their input part (at the edge middle, projected).
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const ContactArcs& arcs, double tolerance);
+
+// The other half of the fidelity check: input vertices inside a part (a fold, a bump between the
+// output vertices) farther than `tolerance` from the remesh are inserted into the nearest
+// triangle of their part, where they stay (pinned): the remesh then passes through them.
+int refine_toward_input(Editor& e, double tolerance);
+
+// ---- repair (cleanup_repair.cpp) ----
+
+// Repairs what the mesh building left invalid (paper §3.3: intersections "resolved by vertex
+// displacements or edge flipping"): around every triangle involved in a violation, edits that
+// make the validity strictly better are kept: moving a vertex to its smoothed position, flipping
+// an edge, collapsing an edge (a needle, a fold along a contact).
+void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options, CleanupReport& report);
+
+}  // namespace voroseal::cleanup
