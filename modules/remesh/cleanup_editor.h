@@ -13,6 +13,7 @@
 #include "framework/geometry/triangle_quality.h"
 #include "framework/model/structural_model.h"
 #include "framework/model/triangle_topology.h"
+#include "modules/remesh/contact_arcs.h"
 #include "modules/remesh/remeshed_surface.h"
 #include "modules/remesh/surface_projection.h"
 #include "modules/remesh/triangle_grid.h"
@@ -76,6 +77,14 @@ class Editor {
   double step_ = 0.0;  // of the file-coordinate grid, see snapped()
   const SurfaceProjector* projector_ = nullptr;  // for flips across folds (see try_flip)
   double tolerance_ = 0.0;                       // the fidelity tolerance
+  const ContactArcs* arcs_ = nullptr;            // the input contacts, for the fidelity tolerance
+  // Contact vertices put at a bend of their contact by the fidelity refinement: they move only
+  // where their contact edges keep within the tolerance (keeps_fidelity()).
+  bool is_bend(int v) const { return static_cast<size_t>(v) < bend_.size() && bend_[v] != 0; }
+  void mark_bend(int v) {
+    if (bend_.size() <= static_cast<size_t>(v)) bend_.resize(v + 1, 0);
+    bend_[v] = 1;
+  }
 
   // ---- geometry ----
   const Vec3& p(int v) const { return s_.vertices[v]; }
@@ -368,6 +377,7 @@ class Editor {
   std::vector<int> fan_tris_, verts_, ring_;
   std::vector<FanBlade> fan_;
   std::vector<std::pair<int, int>> fan_count_;
+  std::vector<char> bend_;
 };
 
 // Applies an edit as a transaction: `affected_before` gives the triangles whose violations the

@@ -325,14 +325,14 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
     if (e.projector_->distance_to_part(e.s_.triangle_part[t1], middle) > e.tolerance_) return false;
   }
+  const Triangle g1{c, u, d}, g2{d, v, c};
+  const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
+  if (!strict && after <= before + 1e-3) return false;
   // Nor does it leave a vertex where other parts meet three triangles of this part closing a fan
   // around it (see raise_valence3_on_contacts).
   if (!strict)
     for (int w : {u, v})
       if (e.star(w).size() > 4 && e.closed_fan_size(w, e.s_.triangle_part[t1]) == 4) return false;
-  const Triangle g1{c, u, d}, g2{d, v, c};
-  const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
-  if (!strict && after <= before + 1e-3) return false;
   const Vec3 m1 = normal_of(e.p(c), e.p(u), e.p(d)), m2 = normal_of(e.p(d), e.p(v), e.p(c));
   const Vec3 ref = n1 + n2;
   if (m1.dot(ref) <= 0 || m2.dot(ref) <= 0) return false;

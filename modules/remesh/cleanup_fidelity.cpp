@@ -72,12 +72,14 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
               return true;
             })) {
           e.s_.features[end].pinned = true;
+          e.mark_bend(end);
           ++splits;
           done = true;
           continue;
         }
       }
       if (try_split(e, u, v, bend, {VertexFeature::Contact, c, true})) {
+        e.mark_bend(static_cast<int>(e.s_.vertices.size()) - 1);
         ++splits;
         done = true;
       }
@@ -104,6 +106,39 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
     if (try_split(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part})) ++splits;
   }
   return splits;
+}
+
+FidelityGuard::FidelityGuard(Editor& e, int v, const std::vector<int>& neighbours) : arcs_(e.arcs_) {
+  const VertexFeature& f = e.s_.features[v];
+  if (arcs_ == nullptr || e.tolerance_ <= 0.0 || f.kind != VertexFeature::Contact) return;
+  contact_ = f.id;
+  const double at = arcs_->position(contact_, e.p(v));
+  int sides = 0;
+  for (int w : neighbours) {
+    if (!along_contact(e, v, w)) continue;
+    if (sides++ == 2) break;
+    Side& side = sides_[count_++];
+    side.end = e.p(w);
+    side.at = arcs_->position(contact_, side.end);
+    double before = 0.0;
+    arcs_->farthest_between(contact_, at, side.at, e.p(v), side.end, &before);
+    side.bound = std::max(e.tolerance_, before);
+  }
+  // A bend has a contact edge on each side; with one side unchecked (a neighbour that is a
+  // corner merged away, Fig. 11b) it could leave its bend for good.
+  refuse_ = e.is_bend(v) && sides != 2;
+}
+
+bool FidelityGuard::allows(const Vec3& x) const {
+  if (refuse_) return false;
+  if (contact_ < 0) return true;
+  const double at = arcs_->position(contact_, x);
+  for (int i = 0; i < count_; ++i) {
+    double distance = 0.0;
+    arcs_->farthest_between(contact_, at, sides_[i].at, x, sides_[i].end, &distance);
+    if (distance > sides_[i].bound) return false;
+  }
+  return true;
 }
 
 int refine_toward_input(Editor& e, double tolerance) {

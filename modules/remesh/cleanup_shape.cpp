@@ -143,15 +143,18 @@ namespace {
 // the vertex in its part. False when no candidate is better by `gain` degrees.
 bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double gain, Vec3& best) {
   const VertexFeature f = e.s_.features[v];
-  if (f.kind == VertexFeature::Corner || f.pinned) return false;
+  if (f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) return false;
   const std::vector<int> ring = e.star(v);
   if (ring.empty()) return false;
   const Vec3 old = e.p(v);
   const double now = ring_min_angle(e, v, old);
   double best_angle = now + gain;
   bool found = false;
+  std::vector<int> nb;
+  e.neighbours(v, nb);
+  const FidelityGuard fidelity(e, v, nb);
   auto consider = [&](const Vec3& x) {
-    if (!ring_unfolded_at(e, v, x)) return;
+    if (!ring_unfolded_at(e, v, x) || !fidelity.allows(x)) return;
     const double a = ring_min_angle(e, v, x);
     if (a > best_angle) {
       best_angle = a;
@@ -159,8 +162,6 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
       found = true;
     }
   };
-  std::vector<int> nb;
-  e.neighbours(v, nb);
   if (f.kind == VertexFeature::Contact) {
     for (int w : nb) {
       if (!along_contact(e, v, w)) continue;
@@ -254,7 +255,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
   for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     const VertexFeature f = e.s_.features[v];
-    if (!wanted[v] || f.kind == VertexFeature::Corner || f.pinned) continue;
+    if (!wanted[v] || f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) continue;
     const std::vector<int> ring = e.star(v);
     if (ring.empty()) continue;
     if (f.kind == VertexFeature::Surface) {
@@ -269,14 +270,15 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     auto score = [](const RingShape& r) { return r.q - r.sharp; };
     double best_score = score(now) + 1e-3;
     Vec3 best = old;
+    e.neighbours(v, nb);
+    const FidelityGuard fidelity(e, v, nb);
     auto better = [&](const Vec3& x, double& at_least) {
-      if (!ring_unfolded_at(e, v, x)) return false;
+      if (!ring_unfolded_at(e, v, x) || !fidelity.allows(x)) return false;
       const RingShape r = ring_shape(e, v, x);
       if (score(r) <= at_least || r.smallest_sine < std::min(now.smallest_sine, 0.5)) return false;
       at_least = score(r);
       return true;
     };
-    e.neighbours(v, nb);
     if (f.kind == VertexFeature::Contact) {
       for (int w : nb) {
         if (!along_contact(e, v, w)) continue;

@@ -196,6 +196,30 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
 // triangle of their part, where they stay (pinned): the remesh then passes through them.
 int refine_toward_input(Editor& e, double tolerance);
 
+// Where a contact vertex may move: its contact edges then stray from the input contact by no
+// more than the fidelity tolerance (or than they did), so that the moves after the fidelity
+// refinement do not undo it (a chord sliding over a bend). The vertices the refinement put at
+// bends (pinned) move under this rule too. Any position is allowed for other vertices and
+// without a tolerance.
+class FidelityGuard {
+ public:
+  /// v's neighbours (Editor::neighbours()).
+  FidelityGuard(Editor& e, int v, const std::vector<int>& neighbours);
+  bool allows(const Vec3& x) const;
+
+ private:
+  struct Side {
+    Vec3 end = Vec3::Zero();  // the neighbour along the contact
+    double at = 0.0;          // its arc length
+    double bound = 0.0;       // the farthest the chord may stray
+  };
+  const ContactArcs* arcs_;
+  int contact_ = -1;
+  bool refuse_ = false;
+  Side sides_[2];
+  int count_ = 0;
+};
+
 // ---- repair (cleanup_repair.cpp) ----
 
 // Repairs what the mesh building left invalid (paper §3.3: intersections "resolved by vertex

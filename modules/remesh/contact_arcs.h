@@ -51,19 +51,26 @@ class ContactArcs {
     *distance = 0.0;
     const Vec3 d = b - a;
     const double l2 = d.squaredNorm();
-    for (size_t i = 0; i < line.size(); ++i) {
-      const double s = arc[i];
-      // Bounds included: a contact end merged away (Fig. 11b) lies at a bound; a vertex at an
-      // output end is at distance 0 from the chord, never the farthest.
-      const bool inside = wrap ? (s <= lo || s >= hi) : (s >= lo && s <= hi);
-      if (!inside) continue;
-      const Vec3& x = m_.vertices[line[i]];
-      const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-      const double dist = (a + t * d - x).norm();
-      if (dist > *distance) {
-        *distance = dist;
-        best = line[i];
+    auto scan = [&](size_t from, size_t to) {
+      for (size_t i = from; i < to; ++i) {
+        const Vec3& x = m_.vertices[line[i]];
+        const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+        const double dist = (a + t * d - x).norm();
+        if (dist > *distance) {
+          *distance = dist;
+          best = line[i];
+        }
       }
+    };
+    // Bounds included: a contact end merged away (Fig. 11b) lies at a bound; a vertex at an
+    // output end is at distance 0 from the chord, never the farthest. Arc lengths increase.
+    const auto first = [&](double s) { return static_cast<size_t>(std::lower_bound(arc.begin(), arc.end(), s) - arc.begin()); };
+    const auto past = [&](double s) { return static_cast<size_t>(std::upper_bound(arc.begin(), arc.end(), s) - arc.begin()); };
+    if (wrap) {
+      scan(0, past(lo));
+      scan(first(hi), arc.size());
+    } else {
+      scan(first(lo), past(hi));
     }
     return best;
   }

@@ -13,6 +13,8 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   Editor e(surface, input);
   e.projector_ = &projector;
   e.tolerance_ = options.fidelity_tolerance;
+  const ContactArcs arcs(input);
+  e.arcs_ = &arcs;
   // Folds along contacts and needles first: they are most of what the mesh building leaves
   // invalid, and d_min merges need valid surroundings to be accepted.
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
@@ -34,7 +36,6 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   report.flips += flip_edges(e, options.flip_flatness_deg);
   smooth(e, projector);
   if (options.fidelity_tolerance > 0.0) {
-    const ContactArcs arcs(input);
     for (int round = 0; round < 3; ++round) {
       const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance) +
                          refine_toward_input(e, options.fidelity_tolerance);

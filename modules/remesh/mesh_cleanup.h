@@ -28,7 +28,8 @@ struct CleanupOptions {
   double min_feature = 0.0;
   /// Contact edges whose chord strays farther than this from their input contact, and triangles
   /// whose middle strays farther than this from their input part, are split (the farthest input
-  /// contact vertex is kept). 0 disables it.
+  /// contact vertex is kept); the angle and quality passes then move contact vertices only where
+  /// their contact edges stay within it. 0 disables it.
   double fidelity_tolerance = 0.0;
   /// Passes moving the vertices of triangles with an angle below 30 degrees to where the smallest
   /// angle around them is largest (after the smoothing).

@@ -15,6 +15,7 @@ struct VertexFeature {
   Kind kind = Surface;
   int id = -1;          // input surface part, contact or corner
   bool pinned = false;  // never moved: held at a sharp bend of its contact, or a fault tip joined to a part
+                        // (bends of the fidelity refinement slide within its tolerance)
 };
 
 struct RemeshedSurface {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "framework/geometry/triangle_quality.h"
 #include "framework/model/model_builder.h"
+#include "io/model_io.h"
 #include "modules/remesh/remesh.h"
 #include "tests/support/test_models.h"
 
@@ -156,6 +158,47 @@ TEST(ModelFromRemeshed, ReportsAPocketAsAGainedRegionAndKeepsTheInputRegionsOnTh
     EXPECT_EQ(out.regions[r].name, input.regions[k].name);
   }
   EXPECT_NE(out.regions[report.regions_gained[0].output_region].name.find("_pocket1"), std::string::npos);
+}
+
+// Distance from the input contact vertex farthest from the output's contacts (any of them).
+double farthest_contact_vertex(const StructuralModel& input, const StructuralModel& output) {
+  double worst = 0.0;
+  for (const Contact& c : input.contacts)
+    for (int x : c.vertices) {
+      const Vec3& p = input.vertices[x];
+      double best = std::numeric_limits<double>::infinity();
+      for (const Contact& d : output.contacts)
+        for (size_t i = 0; i + 1 < d.vertices.size(); ++i) {
+          const Vec3& a = output.vertices[d.vertices[i]];
+          const Vec3 ab = output.vertices[d.vertices[i + 1]] - a;
+          const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+          best = std::min(best, (a + t * ab - p).norm());
+        }
+      worst = std::max(worst, best);
+    }
+  return worst;
+}
+
+TEST(Remesh, FidelityKeepsTheContactsWithinTheTolerance) {
+  // The folded horizons of folded_layers meet the box sides along curves that a coarse remesh
+  // cuts short by up to a sagitta of its edges; the fidelity refinement puts vertices at the
+  // bends, which then slide along their contact only where the chords stay within the tolerance.
+  const StructuralModel input = read_model(test::bundled_model("folded_layers.ts"));
+  Logger log(LogLevel::Warning);
+  Progress progress(false);
+  RemeshOptions options;
+  options.seeds.num_seeds = 300;
+  options.cleanup.min_feature = 0.0;  // merges move contacts by design
+  options.cleanup.fidelity_tolerance = 0.0;
+  const RemeshResult loose = remesh(input, options, log, progress);
+  const double tolerance = 15.0;
+  options.cleanup.fidelity_tolerance = tolerance;
+  const RemeshResult close = remesh(input, options, log, progress);
+  const double before = farthest_contact_vertex(input, loose.model), after = farthest_contact_vertex(input, close.model);
+  EXPECT_GT(before, 2 * tolerance);
+  EXPECT_LE(after, tolerance * (1 + 1e-9));
+  EXPECT_GT(close.cleanup.fidelity_splits, 0);
+  EXPECT_TRUE(close.topology.regions_preserved);
 }
 
 }  // namespace
