@@ -79,7 +79,7 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const Cont
         }
       }
       if (try_split(e, u, v, bend, {VertexFeature::Contact, c, true})) {
-        e.mark_bend(static_cast<int>(e.s_.vertices.size()) - 1);
+        e.mark_bend(static_cast<int>(e.s_.vertices.size()) - 1);  // the vertex try_split added
         ++splits;
         done = true;
       }

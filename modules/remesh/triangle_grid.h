@@ -11,7 +11,6 @@
 
 namespace voroseal {
 
-// Uniform grid of triangle bounding boxes: the candidates of the local intersection tests.
 // Entries are only added; a triangle that moved is inserted again and stale entries are
 // filtered by the caller (alive, actual bounding boxes).
 class TriangleGrid {
