@@ -29,8 +29,9 @@ int fidelity_contact(const Editor& e, int u, int v) {
 
 }  // namespace
 
-int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const ContactArcs& arcs, double tolerance) {
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance) {
   if (tolerance <= 0.0) return 0;
+  const ContactArcs& arcs = *e.arcs_;
   int splits = 0;
   const size_t n = e.s_.triangles.size();
   std::vector<int> tris;

@@ -188,8 +188,9 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
 
 // Splits contact edges whose chord leaves the input contact by more than `tolerance` (at the
 // farthest input vertex, kept in place), and surface edges of triangles whose middle lies
-// farther than `tolerance` from their input part (at the edge middle, projected).
-int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, const ContactArcs& arcs, double tolerance);
+// farther than `tolerance` from their input part (at the edge middle, projected). The input
+// contacts' arc lengths are the Editor's (arcs_).
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance);
 
 // The other half of the fidelity check: input vertices inside a part (a fold, a bump between the
 // output vertices) farther than `tolerance` from the remesh are inserted into the nearest

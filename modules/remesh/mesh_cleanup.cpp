@@ -37,7 +37,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   smooth(e, projector);
   if (options.fidelity_tolerance > 0.0) {
     for (int round = 0; round < 3; ++round) {
-      const int splits = refine_for_fidelity(e, projector, arcs, options.fidelity_tolerance) +
+      const int splits = refine_for_fidelity(e, projector, options.fidelity_tolerance) +
                          refine_toward_input(e, options.fidelity_tolerance);
       report.fidelity_splits += splits;
       if (splits == 0) break;
