@@ -195,23 +195,12 @@ int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_d
   return count;
 }
 
-namespace {
-
-// Around v with v at x: the sum of Q, the sine of the smallest angle (every smallest angle is
-// at most 60 degrees, so sines compare as the angles do; no atan2 in this innermost loop), and
-// the triangles with an angle below 30 degrees.
-struct RingShape {
-  double q = 0.0;
-  double smallest_sine = 1.0;
-  int sharp = 0;
-};
-
-RingShape ring_shape(Editor& e, int v, const Vec3& x) {
+RingShape ring_shape(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b) {
   RingShape r;
-  for (int t : e.star(v)) {
+  for (int t : tris) {
     const Triangle& f = e.s_.triangles[t];
     Vec3 q[3];
-    for (int i = 0; i < 3; ++i) q[i] = f[i] == v ? x : e.p(f[i]);
+    for (int i = 0; i < 3; ++i) q[i] = f[i] == a.v ? a.x : f[i] == b.v ? b.x : e.p(f[i]);
     double len[3];
     for (int i = 0; i < 3; ++i) len[i] = (q[(i + 1) % 3] - q[i]).norm();
     std::sort(len, len + 3);
@@ -226,8 +215,6 @@ RingShape ring_shape(Editor& e, int v, const Vec3& x) {
   return r;
 }
 
-// Whether the middles of the triangles around v, v at x, stay within the fidelity tolerance of
-// their part, or no farther than with v where it is.
 bool stays_close(Editor& e, const SurfaceProjector& projector, int v, const Vec3& x) {
   for (int t : e.star(v)) {
     const Triangle& f = e.s_.triangles[t];
@@ -239,8 +226,6 @@ bool stays_close(Editor& e, const SurfaceProjector& projector, int v, const Vec3
   }
   return true;
 }
-
-}  // namespace
 
 int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_below) {
   std::vector<char> wanted(e.s_.vertices.size(), 0);
@@ -264,7 +249,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
       if (!own) continue;
     }
     const Vec3 old = e.p(v);
-    const RingShape now = ring_shape(e, v, old);
+    const RingShape now = ring_shape(e, e.star(v), {v, old});
     // A triangle sharper than 30 degrees costs as much as a degenerate one, and none gets
     // sharper than the sharpest one there.
     auto score = [](const RingShape& r) { return r.q - r.sharp; };
@@ -274,7 +259,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     const FidelityGuard fidelity(e, v, nb);
     auto better = [&](const Vec3& x, double& at_least) {
       if (!ring_unfolded_at(e, v, x) || !fidelity.allows(x)) return false;
-      const RingShape r = ring_shape(e, v, x);
+      const RingShape r = ring_shape(e, e.star(v), {v, x});
       if (score(r) <= at_least || r.smallest_sine < std::min(now.smallest_sine, 0.5)) return false;
       at_least = score(r);
       return true;

@@ -42,6 +42,10 @@ struct CleanupOptions {
   /// angle passes; see optimize_quality in cleanup_steps.h).
   int quality_passes = 4;
   double quality_below = 0.9;
+  /// Passes of vertex moves judged by the number of triangles sharper than 30 degrees they
+  /// leave (one vertex, then two vertices of a sharp triangle together), before and after the
+  /// quality passes; see reduce_sharp_triangles in cleanup_steps.h. 0 disables them.
+  int sharp_passes = 4;
   /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
   /// holds the tetrahedron of the contact edge and the two apexes: their vertices move to make
   /// those tets' smallest dihedral angle at least this (degrees) where they can. A free border
@@ -56,6 +60,7 @@ struct CleanupReport {
   int needles_collapsed = 0;
   int sharp_collapses = 0;    // edges collapsed to leave fewer triangles sharper than 30 degrees
   int quality_moves = 0;      // vertex moves of the quality passes
+  int sharp_moves = 0;        // moves leaving fewer triangles sharper than 30 degrees
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int tips_joined = 0;        // free border vertices joined to the part they nearly touch
   int flips = 0;

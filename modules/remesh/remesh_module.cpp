@@ -172,6 +172,7 @@ class RemeshModule final : public Module {
                          {"needles_collapsed", result.cleanup.needles_collapsed},
                          {"sharp_collapses", result.cleanup.sharp_collapses},
                          {"quality_moves", result.cleanup.quality_moves},
+                         {"sharp_moves", result.cleanup.sharp_moves},
                          {"wedge_moves", result.cleanup.wedge_moves},
                          {"tips_joined", result.cleanup.tips_joined},
                          {"flips", result.cleanup.flips},

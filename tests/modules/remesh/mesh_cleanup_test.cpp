@@ -157,7 +157,6 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_GE(report.valence3_removed, 1);
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
-
 // Options with the smoothing, flips, angle and quality passes and sharp-edge collapses off, so
 // that the pass a test is about is measured alone.
 CleanupOptions moves_off() {
@@ -167,6 +166,7 @@ CleanupOptions moves_off() {
   o.quality_passes = 0;
   o.flip_flatness_deg = 0.0;
   o.sharp_collapse_rounds = 0;
+  o.sharp_passes = 0;
   return o;
 }
 

@@ -179,6 +179,30 @@ double farthest_contact_vertex(const StructuralModel& input, const StructuralMod
   return worst;
 }
 
+TEST(Remesh, SharpPassesLeaveFewerSharpTrianglesAndNoneMuchSharper) {
+  // The bundled faulted layers at 200 seeds: the angle and quality passes leave 10 triangles
+  // sharper than 30 degrees (at the fault's contacts); moves counted in sharp triangles fix 3.
+  const StructuralModel input = read_model(test::bundled_model("faulted_layers.ts"));
+  Logger log(LogLevel::Warning);
+  Progress progress(false);
+  RemeshOptions options;
+  options.seeds.num_seeds = 200;
+  options.cleanup.sharp_passes = 0;
+  const RemeshResult plain = remesh(input, options, log, progress);
+  options.cleanup.sharp_passes = 4;
+  const RemeshResult counted = remesh(input, options, log, progress);
+  EXPECT_EQ(plain.cleanup.sharp_moves, 0);
+  EXPECT_GT(counted.cleanup.sharp_moves, 0);
+  const QualitySummary a = summarize_quality(plain.model.vertices, flatten(plain.model).triangles),
+                       b = summarize_quality(counted.model.vertices, flatten(counted.model).triangles);
+  ASSERT_GT(a.below_threshold, 0);
+  EXPECT_LT(b.below_threshold, a.below_threshold);
+  EXPECT_GE(b.min_angle_deg, std::min(15.0, a.min_angle_deg - 5.0));
+  EXPECT_GT(b.avg_q, a.avg_q - 0.005);
+  EXPECT_TRUE(counted.topology.regions_preserved);
+  EXPECT_EQ(count_edges(counted.model).border, 0);
+}
+
 TEST(Remesh, FidelityKeepsTheContactsWithinTheTolerance) {
   // The folded horizons of folded_layers meet the box sides along curves that a coarse remesh
   // cuts short by up to a sagitta of its edges; the fidelity refinement puts vertices at the
