@@ -11,7 +11,8 @@ namespace voroseal::cleanup {
 namespace {
 
 constexpr double kSharpDeg = 30.0;  // what is counted (RingShape::sharp)
-constexpr double kFloorDeg = 15.0;  // no triangle of a move gets sharper than this,
+constexpr double kFloorDeg = 15.0;  // no triangle of a move gets sharper than this (or than the
+                                    // sharpest one there, when that one already is),
 constexpr double kGiveDeg = 5.0;    // nor by more than this sharper than the sharpest one was,
 constexpr double kQPerFix = 0.3;    // and the sum of Q there gives up at most this per triangle fixed
 
@@ -71,7 +72,7 @@ class MoveChoice {
  public:
   explicit MoveChoice(const RingShape& now) : now_(now), best_(now) {
     const double sharpest_deg = std::asin(std::min(1.0, now.smallest_sine)) * 180.0 / M_PI;
-    floor_sine_ = std::sin(std::max(kFloorDeg, sharpest_deg - kGiveDeg) * M_PI / 180.0);
+    floor_sine_ = std::sin(std::min(sharpest_deg, std::max(kFloorDeg, sharpest_deg - kGiveDeg)) * M_PI / 180.0);
   }
   // Whether `r` would be the best so far.
   bool better(const RingShape& r) const {
@@ -172,6 +173,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
         }
       }
       if (!choice.found()) continue;
+      // Each measured with the other in place: the triangles of edge (u, v) approximately.
       if (e.tolerance_ > 0.0 &&
           (!stays_close(e, projector, u, best_u.x) || !stays_close(e, projector, v, best_v.x)))
         continue;
