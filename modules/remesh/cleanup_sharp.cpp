@@ -96,7 +96,8 @@ class MoveChoice {
 std::vector<int> sharp_triangles(Editor& e) {
   std::vector<int> sharp;
   for (size_t t = 0; t < e.s_.triangles.size(); ++t)
-    if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < kSharpDeg) sharp.push_back(static_cast<int>(t));
+    if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < kSharpDeg)
+      sharp.push_back(static_cast<int>(t));
   return sharp;
 }
 

@@ -69,7 +69,8 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   if (collapsed > 0) angle_passes();
   // Moves counted in sharp triangles, where the angle passes left some; again after the quality
   // passes, whose moves change the rings.
-  report.sharp_moves += reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
+  report.sharp_moves +=
+      reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
   // Last, as the angle passes trade shape for the smallest angle: each vertex goes where its
   // triangles are best shaped, no triangle getting sharper than 30 degrees.
   for (int i = 0; i < options.quality_passes; ++i) {
@@ -78,7 +79,8 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     report.flips += flip_edges(e, options.flip_flatness_deg);
     if (moved == 0) break;
   }
-  report.sharp_moves += reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
+  report.sharp_moves +=
+      reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
   for (int i = 0; options.wedge_dihedral_deg > 0.0 && i < 8; ++i) {
     const int moved = open_wedge_tets(e, projector, options.wedge_dihedral_deg);
     report.wedge_moves += moved;
