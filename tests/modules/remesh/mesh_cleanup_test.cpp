@@ -157,6 +157,7 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_GE(report.valence3_removed, 1);
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
+
 // Options with the smoothing, flips, angle and quality passes and sharp-edge collapses off, so
 // that the pass a test is about is measured alone.
 CleanupOptions moves_off() {

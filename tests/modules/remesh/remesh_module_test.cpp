@@ -10,10 +10,10 @@
 #include <sstream>
 
 #include "framework/core/error.h"
-#include "framework/host/context.h"
-#include "framework/host/registry.h"
 #include "framework/geometry/surface_distance.h"
 #include "framework/geometry/triangle_quality.h"
+#include "framework/host/context.h"
+#include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
 #include "io/model_io.h"
 #include "modules/remesh/model_geometry.h"
