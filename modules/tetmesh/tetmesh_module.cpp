@@ -125,6 +125,7 @@ class TetmeshModule : public Module {
     const nlohmann::json slivers = {{"bound_deg", run.slivers.bound_deg},
                                     {"tets", run.slivers.total()},
                                     {"wedge", group(run.slivers.wedge)},
+                                    {"layer", group(run.slivers.layer)},
                                     {"needle", group(run.slivers.needle)},
                                     {"surface", group(run.slivers.surface)},
                                     {"interior", group(run.slivers.interior)}};
@@ -187,6 +188,23 @@ class TetmeshModule : public Module {
                        (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
                        ": no tet mesh keeping the surfaces has a larger minimum dihedral angle (`voroseal check` "
                        "lists the thin wedges)");
+    }
+    // The flattest tets across a layer: where the surface mesh is too coarse for the layer.
+    if (run.slivers.flattest_layer_tet >= 0 && run.slivers.layer.min_dihedral_deg < options.min_dihedral_deg &&
+        run.slivers.layer.min_dihedral_deg <= quality.min_dihedral_deg + 1e-9) {
+      const Tetrahedron& k = mesh->tets[run.slivers.flattest_layer_tet];
+      const Vec3 at = 0.25 * (mesh->vertices[k[0]] + mesh->vertices[k[1]] + mesh->vertices[k[2]] + mesh->vertices[k[3]]) +
+                      mesh->frame.origin;
+      auto name = [&](int s) {
+        return s >= 0 && s < static_cast<int>(mesh->surface_names.size()) ? mesh->surface_names[s] : std::to_string(s);
+      };
+      char where[160];
+      std::snprintf(where, sizeof where, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
+      context.log.info("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
+                       " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
+                       name(run.slivers.layer_surfaces[1]) + " at " + where +
+                       ", thinner there than its triangles are wide: a finer surface mesh there (a smaller "
+                       "--edge-length when remeshing) would open them");
     }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");

@@ -1,9 +1,11 @@
 #include "modules/tetmesh/tetrahedralize.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <map>
 #include <random>
 #include <regex>
@@ -548,22 +550,50 @@ SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
   census.bound_deg = bound_deg;
   if (!(bound_deg > 0.0)) return census;
   const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
-  // Per vertex: 0 inside, 1 on a surface, 2 on a needle (a triangle sharper than the bound).
+  // Per vertex: 0 inside, 1 on a surface, 2 on a needle (a triangle sharper than the bound), and
+  // the surfaces it lies on (sorted).
   std::vector<char> kind(mesh.vertices.size(), 0);
-  for (const Triangle& t : mesh.triangles) {
+  std::vector<std::vector<int>> surfaces_of(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Triangle& t = mesh.triangles[i];
     const char k = min_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) < bound_deg ? 2 : 1;
-    for (int v : t) kind[v] = std::max(kind[v], k);
+    for (int v : t) {
+      kind[v] = std::max(kind[v], k);
+      std::vector<int>& list = surfaces_of[v];
+      const int surface = i < mesh.triangle_surface.size() ? mesh.triangle_surface[i] : -1;
+      const auto at = std::lower_bound(list.begin(), list.end(), surface);
+      if (at == list.end() || *at != surface) list.insert(at, surface);
+    }
   }
-  for (const Tetrahedron& t : mesh.tets) {
+  // Two vertices of the tet on surfaces with none in common, or {-1, -1}.
+  auto across_layer = [&](const Tetrahedron& t) {
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const std::vector<int>&sa = surfaces_of[t[a]], &sb = surfaces_of[t[b]];
+        std::vector<int> common;
+        std::set_intersection(sa.begin(), sa.end(), sb.begin(), sb.end(), std::back_inserter(common));
+        if (common.empty()) return std::array<int, 2>{sa.front(), sb.front()};
+      }
+    return std::array<int, 2>{-1, -1};
+  };
+  for (size_t ti = 0; ti < mesh.tets.size(); ++ti) {
+    const Tetrahedron& t = mesh.tets[ti];
     const auto dihedral = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
     const double angle = *std::min_element(dihedral.begin(), dihedral.end());
     if (angle >= bound_deg) continue;
+    const int least = std::min({kind[t[0]], kind[t[1]], kind[t[2]], kind[t[3]]});
     const int k = std::max({kind[t[0]], kind[t[1]], kind[t[2]], kind[t[3]]});
+    const std::array<int, 2> sides = least > 0 ? across_layer(t) : std::array<int, 2>{-1, -1};
     SliverCensus::Group& group = surface_wedge(faces_on_surface(surface_faces, t), dihedral, bound_deg) ? census.wedge
+                                 : sides[0] >= 0                                                          ? census.layer
                                  : k == 2                                                                ? census.needle
                                  : k == 1                                                                ? census.surface
                                                                                                          : census.interior;
     ++group.tets;
+    if (&group == &census.layer && angle < group.min_dihedral_deg) {
+      census.flattest_layer_tet = static_cast<long>(ti);
+      census.layer_surfaces = sides;
+    }
     group.min_dihedral_deg = std::min(group.min_dihedral_deg, angle);
   }
   return census;
@@ -758,6 +788,7 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       groups += (groups.empty() ? "" : ", ") + std::to_string(g.tets) + " " + what + " (min " + number(g.min_dihedral_deg) + " deg)";
     };
     add(info.slivers.wedge, "in wedges between surfaces");
+    add(info.slivers.layer, "across layers thinner than their triangles");
     add(info.slivers.needle, "on needle triangles");
     add(info.slivers.surface, "other next to surfaces");
     add(info.slivers.interior, "inside");

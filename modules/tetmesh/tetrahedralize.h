@@ -2,6 +2,7 @@
 // with region ids, plus the boundary and interface triangles with surface ids.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -75,13 +76,22 @@ struct SliverCensus {
   /// surfaces, or a sharp fold of one): every mesh keeping those triangles holds a tet with that
   /// angle or less. Fixed only by changing the surfaces.
   Group wedge;
+  /// All four vertices on surfaces, two of them on surfaces with no part in common: the tet
+  /// spans a layer between two surfaces (or a gap where they nearly touch). Where the layer is
+  /// much thinner than the triangles are wide, neither TetGen's flips nor interior points open
+  /// such tets; a finer surface mesh there does.
+  Group layer;
   /// A vertex on a surface triangle whose smallest angle is below the bound (a needle).
   Group needle;
   /// Another vertex on a surface.
   Group surface;
   /// All four vertices inside regions.
   Group interior;
-  long total() const { return wedge.tets + needle.tets + surface.tets + interior.tets; }
+  /// The flattest layer tet (-1: none) and a surface (VolumeMesh::triangle_surface id) on each
+  /// side of its layer.
+  long flattest_layer_tet = -1;
+  std::array<int, 2> layer_surfaces{-1, -1};
+  long total() const { return wedge.tets + layer.tets + needle.tets + surface.tets + interior.tets; }
 };
 
 /// Counts the tets of `mesh` below `bound_deg` by group (see SliverCensus); mesh.triangles are

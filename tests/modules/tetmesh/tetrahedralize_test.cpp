@@ -362,9 +362,11 @@ TEST(Tetrahedralize, SliverThresholdSplitsSliversAcrossAThinLayer) {
                q0.min_dihedral_deg, q0.max_dihedral_deg, q0.tets, q1.min_dihedral_deg, q1.max_dihedral_deg, q1.tets);
   EXPECT_LT(q0.min_dihedral_deg, 5.0);
   EXPECT_GT(q0.max_dihedral_deg, 170.0);
-  // The slivers touch the horizons; none is in a wedge, on a needle or inside a region.
+  // The worst slivers span the layer (vertices on both horizons); none is in a wedge, on a
+  // needle or inside a region.
   const SliverCensus census = sliver_census(before, 10.0);
-  EXPECT_EQ(census.surface.min_dihedral_deg, q0.min_dihedral_deg);
+  EXPECT_EQ(census.layer.min_dihedral_deg, q0.min_dihedral_deg);
+  EXPECT_GE(census.flattest_layer_tet, 0);
   EXPECT_EQ(census.wedge.tets + census.needle.tets + census.interior.tets, 0);
   EXPECT_GE(q1.min_dihedral_deg, 10.0);
   EXPECT_LE(q1.max_dihedral_deg, 160.0);
@@ -437,7 +439,7 @@ VolumeMesh one_tet(const Vec3& apex) {
   return mesh;
 }
 
-TEST(SliverCensus, TellsWedgesNeedlesSurfacesAndInteriors) {
+TEST(SliverCensus, TellsWedgesLayersNeedlesSurfacesAndInteriors) {
   const double bound = 10.0;
   // Flat tet (apex nearly in the base plane, over the base): two faces on surfaces meet at a
   // tiny angle: a wedge between surfaces.
@@ -448,6 +450,25 @@ TEST(SliverCensus, TellsWedgesNeedlesSurfacesAndInteriors) {
   EXPECT_EQ(c.wedge.tets, 1);
   EXPECT_EQ(c.total(), 1);
   EXPECT_LT(c.wedge.min_dihedral_deg, 2.0);
+  // The same flat tet with vertices 0 and 1 on one surface and 2 and 3 on another (triangles
+  // beside the tet, far vertices 4 and 5): across a layer between two surfaces.
+  VolumeMesh layer = one_tet(Vec3(0.5, 0.3, 0.01));
+  layer.vertices.push_back(Vec3(0.5, -1, 0));
+  layer.vertices.push_back(Vec3(0.5, 1.6, 0.5));
+  layer.triangles = {{0, 1, 4}, {2, 3, 5}};
+  layer.triangle_surface = {0, 1};
+  c = sliver_census(layer, bound);
+  EXPECT_EQ(c.layer.tets, 1);
+  EXPECT_EQ(c.total(), 1);
+  EXPECT_EQ(c.flattest_layer_tet, 0);
+  EXPECT_EQ(c.layer_surfaces, (std::array<int, 2>{0, 1}));
+  // With vertices 2 and 3 on both surfaces (a contact), every pair of vertices shares one: next
+  // to a surface, not across a layer.
+  layer.triangles.push_back({2, 3, 4});
+  layer.triangle_surface.push_back(0);
+  c = sliver_census(layer, bound);
+  EXPECT_EQ(c.layer.tets, 0);
+  EXPECT_EQ(c.flattest_layer_tet, -1);
   // The same tet with one surface face, a well-shaped one: next to a surface.
   wedge.triangles = {{0, 1, 2}};
   wedge.triangle_surface = {0};
