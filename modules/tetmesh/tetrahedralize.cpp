@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <map>
 #include <random>
 #include <regex>
@@ -565,16 +564,20 @@ SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
       if (at == list.end() || *at != surface) list.insert(at, surface);
     }
   }
-  // Two vertices of the tet on surfaces with none in common, or {-1, -1}.
-  auto across_layer = [&](const Tetrahedron& t) {
+  // Whether two vertices of the tet lie on surfaces with none in common (sorted lists, merged);
+  // `sides` gets a surface of each.
+  auto across_layer = [&](const Tetrahedron& t, std::array<int, 2>& sides) {
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b) {
         const std::vector<int>&sa = surfaces_of[t[a]], &sb = surfaces_of[t[b]];
-        std::vector<int> common;
-        std::set_intersection(sa.begin(), sa.end(), sb.begin(), sb.end(), std::back_inserter(common));
-        if (common.empty()) return std::array<int, 2>{sa.front(), sb.front()};
+        size_t i = 0, j = 0;
+        while (i < sa.size() && j < sb.size() && sa[i] != sb[j]) (sa[i] < sb[j] ? i : j)++;
+        if (i == sa.size() || j == sb.size()) {
+          sides = {sa.front(), sb.front()};
+          return true;
+        }
       }
-    return std::array<int, 2>{-1, -1};
+    return false;
   };
   for (size_t ti = 0; ti < mesh.tets.size(); ++ti) {
     const Tetrahedron& t = mesh.tets[ti];
@@ -583,9 +586,10 @@ SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
     if (angle >= bound_deg) continue;
     const int least = std::min({kind[t[0]], kind[t[1]], kind[t[2]], kind[t[3]]});
     const int k = std::max({kind[t[0]], kind[t[1]], kind[t[2]], kind[t[3]]});
-    const std::array<int, 2> sides = least > 0 ? across_layer(t) : std::array<int, 2>{-1, -1};
+    std::array<int, 2> sides{-1, -1};
+    const bool layer = least > 0 && across_layer(t, sides);
     SliverCensus::Group& group = surface_wedge(faces_on_surface(surface_faces, t), dihedral, bound_deg) ? census.wedge
-                                 : sides[0] >= 0                                                          ? census.layer
+                                 : layer                                                                 ? census.layer
                                  : k == 2                                                                ? census.needle
                                  : k == 1                                                                ? census.surface
                                                                                                          : census.interior;
