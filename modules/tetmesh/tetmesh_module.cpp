@@ -161,10 +161,19 @@ class TetmeshModule : public Module {
     context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
                      " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
                      std::to_string(quality.max_radius_edge));
+    // A point of the model's local frame, in file coordinates, for the log.
+    auto file_point = [](const Vec3& local, const Vec3& origin) {
+      const Vec3 at = local + origin;
+      char text[96];
+      std::snprintf(text, sizeof text, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
+      return std::string(text);
+    };
+    auto tet_centre = [&](long t) {
+      const Tetrahedron& k = mesh->tets[t];
+      return 0.25 * (mesh->vertices[k[0]] + mesh->vertices[k[1]] + mesh->vertices[k[2]] + mesh->vertices[k[3]]);
+    };
     if (flat.count > 0) {
-      const Tetrahedron& k = mesh->tets[flat.worst];
-      const Vec3 at = 0.25 * (mesh->vertices[k[0]] + mesh->vertices[k[1]] + mesh->vertices[k[2]] + mesh->vertices[k[3]]) +
-                      mesh->frame.origin;
+      const std::string at = file_point(tet_centre(flat.worst), mesh->frame.origin);
       const int region = mesh->tet_region[flat.worst];
       const std::string in = region >= 0 && region < static_cast<int>(mesh->region_names.size())
                                  ? " in " + mesh->region_names[region]
@@ -172,17 +181,15 @@ class TetmeshModule : public Module {
       char what[320];
       std::snprintf(what, sizeof what,
                     "tetmesh: %ld nearly flat tets (a dihedral angle under %g deg; the flattest %.3g deg at "
-                    "(%.10g, %.10g, %.10g)%s): a solver may fail on them. ",
-                    flat.count, kFlatTetDeg, flat.worst_deg, at[0], at[1], at[2], in.c_str());
+                    "%s%s): a solver may fail on them. ",
+                    flat.count, kFlatTetDeg, flat.worst_deg, at.c_str(), in.c_str());
       context.log.warning(std::string(what) +
                           "They come from the surfaces (thin wedges, needle triangles, surfaces nearly touching "
                           "without a contact)");
     }
     if (!wedges.empty() && wedges.front().angle_deg < options.min_dihedral_deg) {
       const ContactWedge& w = wedges.front();
-      const Vec3 at = 0.5 * (model.vertices[w.a] + model.vertices[w.b]) + model.frame.origin;
-      char where[160];
-      std::snprintf(where, sizeof where, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
+      const std::string where = file_point(0.5 * (model.vertices[w.a] + model.vertices[w.b]), model.frame.origin);
       const std::string pair = model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name;
       context.log.info("tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
                        (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
@@ -192,14 +199,10 @@ class TetmeshModule : public Module {
     // The flattest tets across a layer: where the surface mesh is too coarse for the layer.
     if (run.slivers.flattest_layer_tet >= 0 && run.slivers.layer.min_dihedral_deg < options.min_dihedral_deg &&
         run.slivers.layer.min_dihedral_deg <= quality.min_dihedral_deg + 1e-9) {
-      const Tetrahedron& k = mesh->tets[run.slivers.flattest_layer_tet];
-      const Vec3 at = 0.25 * (mesh->vertices[k[0]] + mesh->vertices[k[1]] + mesh->vertices[k[2]] + mesh->vertices[k[3]]) +
-                      mesh->frame.origin;
       auto name = [&](int s) {
         return s >= 0 && s < static_cast<int>(mesh->surface_names.size()) ? mesh->surface_names[s] : std::to_string(s);
       };
-      char where[160];
-      std::snprintf(where, sizeof where, "(%.10g, %.10g, %.10g)", at[0], at[1], at[2]);
+      const std::string where = file_point(tet_centre(run.slivers.flattest_layer_tet), mesh->frame.origin);
       context.log.info("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
                        " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
                        name(run.slivers.layer_surfaces[1]) + " at " + where +
