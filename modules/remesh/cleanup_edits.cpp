@@ -374,17 +374,19 @@ bool move_checked(Editor& e, int v, const Vec3& x) {
   });
 }
 
-bool ring_unfolded_at(Editor& e, int v, const Vec3& x) {
-  for (int t : e.star(v)) {
+bool unfolded_with(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b) {
+  for (int t : tris) {
     const Triangle& tri = e.s_.triangles[t];
     Vec3 q[3];
-    for (int i = 0; i < 3; ++i) q[i] = tri[i] == v ? x : e.p(tri[i]);
+    for (int i = 0; i < 3; ++i) q[i] = tri[i] == a.v ? a.x : tri[i] == b.v ? b.x : e.p(tri[i]);
     const Vec3 n = normal_of(q[0], q[1], q[2]);
     const Vec3 before = e.normal(t);
     if (!(n.dot(before) > 0.0 && n.norm() > 1e-3 * before.norm())) return false;
   }
   return true;
 }
+
+bool ring_unfolded_at(Editor& e, int v, const Vec3& x) { return unfolded_with(e, e.star(v), {v, x}); }
 
 bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, double step,
                    Vec3& result) {

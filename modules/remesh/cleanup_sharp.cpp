@@ -53,19 +53,6 @@ void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int co
     }
 }
 
-// Whether a triangle of `tris` turns over or goes flat with the placed vertices moved (as
-// ring_unfolded_at()).
-bool folds(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b) {
-  for (int t : tris) {
-    const Triangle& f = e.s_.triangles[t];
-    Vec3 q[3];
-    for (int i = 0; i < 3; ++i) q[i] = f[i] == a.v ? a.x : f[i] == b.v ? b.x : e.p(f[i]);
-    const Vec3 before = e.normal(t), after = normal_of(q[0], q[1], q[2]);
-    if (after.dot(before) <= 0.0 || after.norm() < 1e-3 * before.norm()) return true;
-  }
-  return false;
-}
-
 // The rule of a move: fewer sharp triangles than `now`, the sharpest no sharper than the floor,
 // the sum of Q within its allowance; among those, the fewest sharp, then the best Q.
 class MoveChoice {
@@ -122,7 +109,7 @@ int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
     for (size_t c = 1; c < candidates.size(); ++c) {
       const Placement at{v, candidates[c]};
       const RingShape r = ring_shape(e, ring, at);
-      if (!choice.better(r) || !fidelity.allows(at.x) || folds(e, ring, at, {})) continue;
+      if (!choice.better(r) || !fidelity.allows(at.x) || !unfolded_with(e, ring, at)) continue;
       choice.take(r);
       best = at.x;
     }
@@ -167,7 +154,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
           if ((a == 0 && b == 0) || !allowed_v[b]) continue;
           const Placement pu{u, at_u[a]}, pv{v, at_v[b]};
           const RingShape r = ring_shape(e, ring, pu, pv);
-          if (!choice.better(r) || folds(e, ring, pu, pv)) continue;
+          if (!choice.better(r) || !unfolded_with(e, ring, pu, pv)) continue;
           choice.take(r);
           best_u = pu;
           best_v = pv;

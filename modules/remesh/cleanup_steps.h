@@ -86,8 +86,17 @@ bool along_contact(Editor& e, int v, int w);
 // Moves v to x when the validity of its ring allows it (one checked edit).
 bool move_checked(Editor& e, int v, const Vec3& x);
 
-// Whether moving v to x leaves every triangle of its ring facing the way it did, and not flat
-// (its normal keeps at least 1e-3 of its length).
+// Vertex v placed at x, to measure a move before making it (v = -1: none).
+struct Placement {
+  int v = -1;
+  Vec3 x = Vec3::Zero();
+};
+
+// Whether every triangle of `tris` keeps facing the way it does, and is not flat (its normal
+// keeps more than 1e-3 of its length), with the placed vertices at their places.
+bool unfolded_with(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b = {});
+
+// unfolded_with() for the ring of v, v at x.
 bool ring_unfolded_at(Editor& e, int v, const Vec3& x);
 
 // Where a move of v toward `target` (then back onto its feature) ends: the full step, else half,
@@ -155,12 +164,6 @@ void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char
 
 // Smallest angle of the triangles around v with v at x.
 double ring_min_angle(Editor& e, int v, const Vec3& x);
-
-// Vertex v placed at x, to measure a move before making it (v = -1: none).
-struct Placement {
-  int v = -1;
-  Vec3 x = Vec3::Zero();
-};
 
 // The triangles `tris` with the placed vertices at their places: the sum of Q, the sine of the
 // smallest angle (every smallest angle is at most 60 degrees, so sines compare as the angles do;
