@@ -589,10 +589,6 @@ class MeshBuilder {
 
 }  // namespace
 
-double edge_length_for_seeds(double area, int seeds) {
-  return seeds > 0 ? std::sqrt(2.0 * area / (std::sqrt(3.0) * seeds)) : 0.0;
-}
-
 MeshBuildResult build_remeshed_surface(const StructuralModel& input, const ModelGeometry& geometry,
                                        const RestrictedVoronoiDiagram& rvd, const SurfaceProjector& projector,
                                        const MeshBuildOptions& options) {

@@ -60,10 +60,6 @@ struct MeshBuildOptions {
   double sharp_angle_deg = 50.0;
 };
 
-/// Mean edge length of a remesh with `seeds` seeds over `area`: the h for which
-/// area = seeds * (sqrt(3)/2) h^2 (one seed per hexagonal cell of an equilateral mesh).
-double edge_length_for_seeds(double area, int seeds);
-
 struct MeshBuildResult {
   RemeshedSurface surface;
   std::vector<FeatureMerge> merges;

@@ -101,6 +101,10 @@ ModelGeometry::ModelGeometry(const StructuralModel& model, const std::vector<dou
     rec.normal = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
     area_ += rec.area;
     mass_ += rec.area * (rec.density[0] + rec.density[1] + rec.density[2]) / 3.0;
+    // Edge-midpoint rule (exact for quadratics) on the square root of the linear density.
+    double root = 0.0;
+    for (int k = 0; k < 3; ++k) root += std::sqrt(0.5 * (rec.density[k] + rec.density[(k + 1) % 3]));
+    root_mass_ += rec.area * root / 3.0;
     for (int k = 0; k < 3; ++k) {
       const std::uint64_t key = edge_key(f[k], f[(k + 1) % 3]);
       const auto it = line_contact.find(key);
@@ -114,6 +118,7 @@ ModelGeometry::ModelGeometry(const StructuralModel& model, const std::vector<dou
   }
   if (!(area_ > 0.0)) throw ModelError("remesh: the model has zero area");
   if (has_density_ && !(mass_ > 0.0)) throw ParameterError("remesh: the density is zero everywhere");
+  if (!has_density_) root_mass_ = area_;  // the same bits as the area (edge lengths derive from it)
 }
 
 }  // namespace voroseal

@@ -54,6 +54,9 @@ class ModelGeometry {
   double area() const { return area_; }
   /// Integral of rho over the model (equals area() without density).
   double mass() const { return mass_; }
+  /// Integral of sqrt(rho) over the model: the area the seeds share as if rho were 1, since a 2D
+  /// CVT puts seeds at a density proportional to sqrt(rho) (equals area() without density).
+  double root_mass() const { return root_mass_; }
   BoundingBox bbox() const { return bbox_; }
   /// Number of triangle edges that lie on a contact (counted once per line edge).
   int num_line_edges() const { return num_line_edges_; }
@@ -69,6 +72,7 @@ class ModelGeometry {
   bool has_density_ = false;
   double area_ = 0.0;
   double mass_ = 0.0;
+  double root_mass_ = 0.0;
   BoundingBox bbox_;
 };
 

@@ -10,6 +10,7 @@
 #include "framework/core/error.h"
 #include "framework/model/model_builder.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
+#include "modules/remesh/seed_sampling.h"
 #include "modules/remesh/surface_projection.h"
 
 namespace voroseal {
@@ -162,7 +163,8 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   result.seeds = std::move(seeds);
 
   auto t0 = std::chrono::steady_clock::now();
-  const ModelGeometry geometry(input, options.seeds.vertex_density);
+  const ModelGeometry geometry(
+      input, result.seeds.vertex_density.empty() ? options.seeds.vertex_density : result.seeds.vertex_density);
   RvdOptions rvd_options;
   rvd_options.threads = options.seeds.threads;
   const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
@@ -170,7 +172,8 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
 
   t0 = std::chrono::steady_clock::now();
   const SurfaceProjector projector(input);
-  const double h = edge_length_for_seeds(geometry.area(), static_cast<int>(result.seeds.seeds.size()));
+  // The mean edge length where ρ = 1: what the user's resolution asks for.
+  const double h = edge_length_for_seeds(geometry.root_mass(), static_cast<int>(result.seeds.seeds.size()));
   MeshBuildOptions build = options.build;
   if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
   CleanupOptions cleanup = options.cleanup;

@@ -94,6 +94,13 @@ class RemeshModule final : public Module {
                      "split where the remesh strays farther than this from the input "
                      "(default: 0.1 x the mean edge length; 0: off)",
                      0.0));
+    p.push_back(spec("thin-layers", ParameterType::Bool, false,
+                     "smaller cells on the sides of layers thinner than the cells, so that a tet mesh can fill them "
+                     "without flat tets (more seeds there; the size elsewhere is kept)"));
+    p.push_back(spec("layer-ratio", ParameterType::Double, LayerSizingOptions{}.ratio,
+                     "with --thin-layers: cells at most this many times the layer thickness", 0.5, 1e6));
+    p.push_back(spec("layer-refinement", ParameterType::Double, LayerSizingOptions{}.max_refinement,
+                     "with --thin-layers: cells at most this many times smaller than elsewhere", 1.0, 100.0));
     p.push_back(spec("cleanup", ParameterType::Bool, true, "clean the dual mesh up: valence-3 vertices, needles, flips, smoothing, repairs (--no-cleanup keeps the raw dual mesh)"));
     p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
                      "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
@@ -118,6 +125,9 @@ class RemeshModule final : public Module {
     options.random_seed = static_cast<std::uint64_t>(parameters.get_int("seed"));
     if (parameters.has("boundary-weight")) options.boundary_weight = parameters.get_double("boundary-weight");
     options.threads = context.threads;
+    options.thin_layers = parameters.get_bool("thin-layers");
+    options.layer_sizing.ratio = parameters.get_double("layer-ratio");
+    options.layer_sizing.max_refinement = parameters.get_double("layer-refinement");
 
     RemeshOptions remesh_options;
     remesh_options.seeds = options;
@@ -147,6 +157,13 @@ class RemeshModule final : public Module {
                          {"seconds", it.seconds}});
     nlohmann::json& report = context.report["remesh"];
     report["seeds"] = r.seeds.size();
+    if (options.thin_layers)
+      report["thin_layers"] = {{"base_seeds", r.base_seeds},
+                               {"seeds_added", static_cast<long>(r.seeds.size()) - r.base_seeds},
+                               {"thin_samples", r.thin_layer_samples},
+                               {"pinch_vertices", r.pinch_vertices},
+                               {"thinnest", r.thinnest_layer},
+                               {"edge_length", r.edge_length}};
     report["optimizer"] = to_string(options.optimizer.kind);
     report["alpha"] = r.alpha;
     report["iterations"] = r.run.history.empty() ? 0 : r.run.history.back().iteration;

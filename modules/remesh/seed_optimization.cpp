@@ -19,14 +19,37 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOptions& options, Logger& log,
                                       Progress& progress) {
   const auto t0 = Clock::now();
-  const ModelGeometry geometry(model, options.vertex_density);
+  std::vector<double> density = options.vertex_density;
+  if (options.thin_layers && !density.empty())
+    throw ParameterError("remesh: a density and the thin-layer sizing exclude each other");
+  const double area = model.area();
   int n = options.num_seeds;
   if (n <= 0) {
     if (!(options.edge_length > 0.0))
       throw ParameterError("remesh: give a number of seeds or a positive target edge length");
-    n = seed_count_for_edge_length(geometry.area(), options.edge_length);
+    n = seed_count_for_edge_length(area, options.edge_length);
   }
-  char line[200];
+  const int base_seeds = n;
+  char line[300];
+  LayerSizing layers;
+  if (options.thin_layers && area > 0.0) {
+    const double h = edge_length_for_seeds(area, n);
+    layers = thin_layer_sizing(model, h, options.layer_sizing);
+    if (layers.refines()) density = density_from_sizing(layers.size, h);
+  }
+  const ModelGeometry geometry(model, density);
+  if (!density.empty() && options.thin_layers) {
+    // As many seeds where ρ = 1 as the resolution asks for: N grows by ∫√ρ / area.
+    const double seeds = std::round(static_cast<double>(n) * geometry.root_mass() / geometry.area());
+    if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the thin-layer sizing gives too many seeds");
+    n = std::max(n, static_cast<int>(seeds));
+    std::snprintf(line, sizeof line,
+                  "remesh: thin layers: %d thickness samples on layers thinner than %.4g (thinnest %.4g), "
+                  "%d seeds more for them",
+                  layers.thin_samples, edge_length_for_seeds(area, base_seeds) / options.layer_sizing.ratio,
+                  layers.thinnest, n - base_seeds);
+    log.info(line);
+  }
   std::snprintf(line, sizeof line, "remesh: %d seeds on %zu triangles (area %.6g)", n, geometry.triangles().size(),
                 geometry.area());
   log.info(line);
@@ -34,6 +57,12 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   const double sampling = since(t0);
   SeedOptimizationResult result = optimize_seeds(geometry, std::move(initial), options, log, progress);
   result.sampling_seconds = sampling;
+  result.vertex_density = std::move(density);
+  result.base_seeds = base_seeds;
+  result.thin_layer_samples = layers.thin_samples;
+  result.pinch_vertices = layers.pinch_vertices;
+  result.thinnest_layer = layers.refines() ? layers.thinnest : 0.0;
+  result.thinnest_layer_at = layers.thinnest_at;
   return result;
 }
 
@@ -75,6 +104,8 @@ SeedOptimizationResult optimize_seeds(const ModelGeometry& geometry, std::vector
   }
   if (!(alpha >= 0.0 && alpha <= 1.0)) throw ParameterError("remesh: the boundary weight must be in [0, 1]");
   result.alpha = alpha;
+  result.edge_length = edge_length_for_seeds(geometry.root_mass(), static_cast<int>(initial.size()));
+  result.base_seeds = static_cast<int>(initial.size());
   char line[160];
   std::snprintf(line, sizeof line, "remesh: boundary weight alpha = %.4g, optimizer %s", alpha,
                 to_string(options.optimizer.kind));

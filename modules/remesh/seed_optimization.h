@@ -10,6 +10,7 @@
 #include "framework/core/types.h"
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
+#include "modules/remesh/layer_sizing.h"
 #include "modules/remesh/model_geometry.h"
 #include "modules/remesh/optimizer.h"
 
@@ -19,6 +20,11 @@ struct SeedOptions {
   int num_seeds = 0;          // > 0: this many seeds
   double edge_length = 0.0;   // else N from the target edge length (seed_count_for_edge_length)
   std::vector<double> vertex_density;  // optional ρ at every model vertex (empty: uniform)
+  /// Smaller cells on the sides of layers thinner than the cells (layer_sizing.h), as a density;
+  /// the seed count grows so that the cells elsewhere keep the size asked for. Not with a
+  /// vertex_density.
+  bool thin_layers = false;
+  LayerSizingOptions layer_sizing;
   std::uint64_t random_seed = 1;       // initial sampling
   OptimizerOptions optimizer;          // kind, iterations (default 100), gradient threshold
   /// α in F = (1 − α) F_CVT + α F_B. Negative: from the gradient-norm ratio at the initial
@@ -30,6 +36,14 @@ struct SeedOptions {
 struct SeedOptimizationResult {
   std::vector<Vec3> seeds;           // optimised seeds, local frame of the model
   std::vector<Vec3> initial_seeds;   // the random sampling they started from
+  std::vector<double> vertex_density;  // ρ the seeds were optimised for (empty: uniform)
+  double edge_length = 0.0;          // mean edge length where ρ = 1
+  /// With thin_layers: the seeds the resolution alone asks for (the rest went to the layers),
+  /// and what the sizing found.
+  int base_seeds = 0;
+  int thin_layer_samples = 0, pinch_vertices = 0;
+  double thinnest_layer = 0.0;
+  Vec3 thinnest_layer_at = Vec3::Zero();
   double alpha = 0.0;                // the boundary weight used
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;
@@ -37,8 +51,9 @@ struct SeedOptimizationResult {
 };
 
 /// Samples and optimises seeds on `model`.
-/// \throws ParameterError (neither num_seeds nor a positive edge_length, a bad density,
-///         Ceres requested but not built), ModelError (no triangle, zero area).
+/// \throws ParameterError (neither num_seeds nor a positive edge_length, a bad density, a
+///         density with thin_layers, Ceres requested but not built), ModelError (no triangle,
+///         zero area).
 SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOptions& options, Logger& log,
                                       Progress& progress);
 

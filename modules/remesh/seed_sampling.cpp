@@ -19,6 +19,10 @@ int seed_count_for_edge_length(double area, double edge_length) {
   return std::max(1, static_cast<int>(n));
 }
 
+double edge_length_for_seeds(double area, int seeds) {
+  return seeds > 0 ? std::sqrt(2.0 * area / (std::sqrt(3.0) * seeds)) : 0.0;
+}
+
 namespace {
 
 // Uniform double in [0, 1) from 53 random bits (the same on every platform).
@@ -36,7 +40,8 @@ std::vector<Vec3> sample_seeds(const ModelGeometry& geometry, int count, std::ui
   double total = 0.0;
   for (int id = 0; id < nt; ++id) {
     const TriangleRecord& t = tris[geometry.record_of(id)];
-    total += t.area * (t.density[0] + t.density[1] + t.density[2]) / 3.0;
+    // A 2D CVT's seeds end at a density proportional to sqrt(rho): start from it.
+    total += t.area * (std::sqrt(t.density[0]) + std::sqrt(t.density[1]) + std::sqrt(t.density[2])) / 3.0;
     cumulative[id] = total;
   }
   std::mt19937_64 rng(random_seed);
@@ -50,10 +55,10 @@ std::vector<Vec3> sample_seeds(const ModelGeometry& geometry, int count, std::ui
     const double r1 = std::sqrt(uniform(rng)), r2 = uniform(rng);
     const double b0 = 1.0 - r1, b1 = r1 * (1.0 - r2), b2 = r1 * r2;
     if (geometry.has_density()) {
-      // Accept with probability ρ(x) / max ρ on the triangle.
+      // Accept with probability sqrt(ρ(x) / max ρ on the triangle).
       const double rho = b0 * t.density[0] + b1 * t.density[1] + b2 * t.density[2];
       const double rho_max = std::max({t.density[0], t.density[1], t.density[2]});
-      if (uniform(rng) * rho_max > rho) continue;
+      if (uniform(rng) * std::sqrt(rho_max) > std::sqrt(rho)) continue;
     }
     seeds.push_back(b0 * t.p[0] + b1 * t.p[1] + b2 * t.p[2]);
   }

@@ -1,5 +1,5 @@
 // Initial seeds (paper §3.1, Algorithm 1 step 1): how many, and a random sampling of the model
-// proportional to area (times the density ρ when the geometry has one), over all surface parts.
+// proportional to area (times √ρ when the geometry has a density ρ), over all surface parts.
 #pragma once
 
 #include <cstdint>
@@ -16,9 +16,14 @@ namespace voroseal {
 /// 2^31 − 1.
 int seed_count_for_edge_length(double area, double edge_length);
 
+/// Mean edge length of a remesh with `seeds` seeds over `area`: the h for which
+/// area = seeds * (sqrt(3)/2) h^2 (one seed per hexagonal cell of an equilateral mesh). With a
+/// density, pass ModelGeometry::root_mass() for the edge length where ρ = 1.
+double edge_length_for_seeds(double area, int seeds);
+
 /// `count` seeds drawn at random on the model: a triangle with probability proportional to its
-/// area (to ∫ρ over it with a density), then a uniform point in it (for a density, rejection
-/// against its linear ρ). Reproducible from `random_seed` on any platform (mt19937_64 and
+/// area (to ∫√ρ over it with a density: the seed density of a 2D CVT), then a uniform point in
+/// it (for a density, rejection against the square root of its linear ρ). Reproducible from `random_seed` on any platform (mt19937_64 and
 /// explicit conversions). The result is sorted along a Morton curve (spatial locality for the
 /// clipping) and has no two equal points.
 /// \throws ParameterError when count < 1.

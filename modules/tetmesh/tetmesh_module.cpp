@@ -206,8 +206,8 @@ class TetmeshModule : public Module {
       context.log.info("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
                        " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
                        name(run.slivers.layer_surfaces[1]) + " at " + where +
-                       ", thinner there than its triangles are wide: a finer surface mesh there (a smaller "
-                       "--edge-length when remeshing) would open them");
+                       ", thinner there than its triangles are wide: a finer surface mesh there (`remesh "
+                       "--thin-layers`, or a smaller --edge-length) would open them");
     }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");

@@ -35,7 +35,9 @@ TEST(ContactWedges, WedgesFacingTheUniverseAreLeftOut) {
   ASSERT_EQ(all.size(), 9u);
   for (size_t i = 0; i < all.size(); ++i) {
     EXPECT_EQ(all[i].region, 0);
-    if (i > 0) EXPECT_LE(all[i - 1].angle_deg, all[i].angle_deg);
+    if (i > 0) {
+      EXPECT_LE(all[i - 1].angle_deg, all[i].angle_deg);
+    }
   }
   EXPECT_NEAR(all[1].angle_deg, 87.0, 1e-9);
   EXPECT_NEAR(all.back().angle_deg, 90.0, 1e-9);

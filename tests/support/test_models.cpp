@@ -82,6 +82,64 @@ SurfaceSoup pinch_out_prism(double angle_deg) {
   return soup;
 }
 
+/// Unit box cut by two horizons `thickness` apart around z = 0.5 (a layer thinner than the
+/// horizon triangles, 1/n): horizon "lower" on the regular n × n lattice, horizon "upper" with
+/// its interior vertices moved by up to ±0.3 cell and its quads split along the other diagonal,
+/// so that the two triangulations do not line up. Box sides are lattices over the z levels
+/// 0, 0.25, lower, upper, 0.75, 1. Three regions.
+SurfaceSoup thin_layer_box(int n, double thickness) {
+  SurfaceSoup soup;
+  soup.source = "thin_layer_box";
+  const double lower = 0.5 - thickness / 2, upper = 0.5 + thickness / 2;
+  const std::vector<double> levels = {0.0, 0.25, lower, upper, 0.75, 1.0};
+  const int top = static_cast<int>(levels.size()) - 1, upper_level = 3;
+  auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for (int k = 0; k <= top; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        Vec3 p(static_cast<double>(i) / n, static_cast<double>(j) / n, levels[k]);
+        if (k == upper_level && i > 0 && i < n && j > 0 && j < n) {
+          p.x() += jitter(rng) / n;
+          p.y() += jitter(rng) / n;
+        }
+        soup.points.push_back(p);
+      }
+  auto add_group = [&](const std::string& name, SurfaceKind kind) {
+    soup.groups.push_back({name, name, kind, ""});
+    return static_cast<int>(soup.groups.size()) - 1;
+  };
+  // Quad (a, b, c, d), split along a–c, or b–d when `other`.
+  auto quad = [&](int g, int a, int b, int c, int d, bool other = false) {
+    const std::array<Triangle, 2> halves =
+        other ? std::array<Triangle, 2>{Triangle{a, b, d}, Triangle{b, c, d}} : std::array<Triangle, 2>{Triangle{a, b, c}, Triangle{a, c, d}};
+    for (const Triangle& t : halves) {
+      soup.triangles.push_back(t);
+      soup.triangle_group.push_back(g);
+    }
+  };
+  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
+  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
+  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
+  const int low = add_group("lower", SurfaceKind::Horizon), up = add_group("upper", SurfaceKind::Horizon);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
+      quad(zmax, id(a, b, top), id(a + 1, b, top), id(a + 1, b + 1, top), id(a, b + 1, top));
+      quad(low, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2));
+      quad(up, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level), id(a, b + 1, upper_level), true);
+    }
+  for (int a = 0; a < n; ++a)
+    for (int k = 0; k < top; ++k) {
+      quad(ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
+      quad(ymax, id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1), id(a + 1, n, k));
+      quad(xmin, id(0, a, k), id(0, a, k + 1), id(0, a + 1, k + 1), id(0, a + 1, k));
+      quad(xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
+    }
+  return soup;
+}
+
 void append(SurfaceSoup& a, const SurfaceSoup& b) {
   const int offset = static_cast<int>(a.points.size());
   const int goffset = static_cast<int>(a.groups.size());

@@ -22,6 +22,13 @@ SurfaceSoup floating_fault(int n, double x0, double lo, double hi);
 /// The top and bottom meet inside the region at exactly angle_deg along the pinch-out.
 SurfaceSoup pinch_out_prism(double angle_deg);
 
+/// Unit box cut by two horizons `thickness` apart around z = 0.5 (a layer thinner than the
+/// horizon triangles, 1/n): horizon "lower" on the regular n × n lattice, horizon "upper" with
+/// its interior vertices moved by up to ±0.3 cell and its quads split along the other diagonal,
+/// so that the two triangulations do not line up. Box sides are lattices over the z levels
+/// 0, 0.25, lower, upper, 0.75, 1. Three regions.
+SurfaceSoup thin_layer_box(int n, double thickness);
+
 /// Appends b to a (points, triangles, groups).
 void append(SurfaceSoup& a, const SurfaceSoup& b);
 

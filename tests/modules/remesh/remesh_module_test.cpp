@@ -110,6 +110,35 @@ TEST(RemeshModule, RejectsBadParameters) {
   }
 }
 
+TEST(RemeshModule, ThinLayersAddSeedsOnTheLayerAndReportThem) {
+  // A layer 0.01 thick under cells of about 0.2: --thin-layers asks for cells of 6 x 0.01 on
+  // its sides (both horizons, a quarter of the area), about 11 times the seeds there.
+  auto run = [](nlohmann::json extra) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    harness.context.model = std::make_shared<StructuralModel>(build_model(test::thin_layer_box(8, 0.01)));
+    nlohmann::json values = {{"seeds", 200}, {"iterations", 10}};
+    values.update(extra);
+    harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
+    return harness.context.report.at("remesh");
+  };
+  const nlohmann::json plain = run(nlohmann::json::object());
+  EXPECT_EQ(plain.at("seeds").get<int>(), 200);
+  EXPECT_FALSE(plain.contains("thin_layers"));
+  const nlohmann::json sized = run({{"thin-layers", true}});
+  const nlohmann::json& layers = sized.at("thin_layers");
+  EXPECT_EQ(layers.at("base_seeds").get<int>(), 200);
+  EXPECT_GT(sized.at("seeds").get<int>(), 600);
+  EXPECT_EQ(layers.at("seeds_added").get<int>(), sized.at("seeds").get<int>() - 200);
+  EXPECT_NEAR(layers.at("thinnest").get<double>(), 0.01, 1e-9);
+  EXPECT_GT(layers.at("thin_samples").get<int>(), 0);
+  EXPECT_TRUE(sized.at("topology").at("regions_preserved").get<bool>());
+  // A ratio that asks for cells wider than the thickness times 20 refines less.
+  const nlohmann::json wider = run({{"thin-layers", true}, {"layer-ratio", 20.0}});
+  EXPECT_LT(wider.at("seeds").get<int>(), sized.at("seeds").get<int>());
+  EXPECT_GT(wider.at("seeds").get<int>(), 200);
+  EXPECT_THROW(run({{"thin-layers", true}, {"layer-refinement", 0.5}}), ParameterError);
+}
+
 TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
   // A fault crossing the horizon without a contact (the input itself is not conformal): the
   // remeshed surfaces cross where the input's do, which no clean-up can undo. The output is

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <random>
 #include <set>
 
 #include "framework/core/error.h"
 #include "framework/model/model_builder.h"
 #include "io/model_io.h"
+#include "modules/remesh/remesh.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "framework/geometry/volume_quality.h"
@@ -285,70 +285,12 @@ INSTANTIATE_TEST_SUITE_P(Models, BundledModel, testing::Values("folded_layers.ts
                            return name.substr(0, name.find('.'));
                          });
 
-/// Unit box cut by two horizons `thickness` apart around z = 0.5 (a layer thinner than the
-/// horizon triangles, 1/n): horizon "lower" on the regular n × n lattice, horizon "upper" with
-/// its interior vertices moved by up to ±0.3 cell and its quads split along the other diagonal,
-/// so that the two triangulations do not line up. Box sides are lattices over the z levels
-/// 0, 0.25, lower, upper, 0.75, 1. Three regions.
-SurfaceSoup thin_layer_box(int n, double thickness) {
-  SurfaceSoup soup;
-  soup.source = "thin_layer_box";
-  const double lower = 0.5 - thickness / 2, upper = 0.5 + thickness / 2;
-  const std::vector<double> levels = {0.0, 0.25, lower, upper, 0.75, 1.0};
-  const int top = static_cast<int>(levels.size()) - 1, upper_level = 3;
-  auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-  for (int k = 0; k <= top; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        Vec3 p(static_cast<double>(i) / n, static_cast<double>(j) / n, levels[k]);
-        if (k == upper_level && i > 0 && i < n && j > 0 && j < n) {
-          p.x() += jitter(rng) / n;
-          p.y() += jitter(rng) / n;
-        }
-        soup.points.push_back(p);
-      }
-  auto add_group = [&](const std::string& name, SurfaceKind kind) {
-    soup.groups.push_back({name, name, kind, ""});
-    return static_cast<int>(soup.groups.size()) - 1;
-  };
-  // Quad (a, b, c, d), split along a–c, or b–d when `other`.
-  auto quad = [&](int g, int a, int b, int c, int d, bool other = false) {
-    const std::array<Triangle, 2> halves =
-        other ? std::array<Triangle, 2>{Triangle{a, b, d}, Triangle{b, c, d}} : std::array<Triangle, 2>{Triangle{a, b, c}, Triangle{a, c, d}};
-    for (const Triangle& t : halves) {
-      soup.triangles.push_back(t);
-      soup.triangle_group.push_back(g);
-    }
-  };
-  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
-  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
-  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
-  const int low = add_group("lower", SurfaceKind::Horizon), up = add_group("upper", SurfaceKind::Horizon);
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
-      quad(zmax, id(a, b, top), id(a + 1, b, top), id(a + 1, b + 1, top), id(a, b + 1, top));
-      quad(low, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2));
-      quad(up, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level), id(a, b + 1, upper_level), true);
-    }
-  for (int a = 0; a < n; ++a)
-    for (int k = 0; k < top; ++k) {
-      quad(ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
-      quad(ymax, id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1), id(a + 1, n, k));
-      quad(xmin, id(0, a, k), id(0, a, k + 1), id(0, a + 1, k + 1), id(0, a + 1, k));
-      quad(xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
-    }
-  return soup;
-}
-
 TEST(Tetrahedralize, SliverThresholdSplitsSliversAcrossAThinLayer) {
   // Slivers spanning a layer thinner than its triangles have their four vertices on the two
   // horizons and a largest dihedral angle of 170–178°: TetGen's refinement cannot split them
   // (their circumcentres encroach upon the kept horizons) and its own optimisation thresholds
   // (179°) leave them. Sliver passes off to see TetGen's optimisation alone.
-  const StructuralModel model = build_model(thin_layer_box(8, 0.08));
+  const StructuralModel model = build_model(test::thin_layer_box(8, 0.08));
   ASSERT_EQ(model.regions.size(), 3u);
   Logger log = quiet_logger();
   TetmeshOptions options;
@@ -397,7 +339,7 @@ TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   // A layer a quarter of its triangles thick: TetGen's sliver splitting leaves tets with a short
   // edge across the layer seen from far vertices (no face on a surface); the off-centres of
   // those edges, pass after pass, raise the minimum.
-  const StructuralModel model = build_model(thin_layer_box(8, 0.03));
+  const StructuralModel model = build_model(test::thin_layer_box(8, 0.03));
   Logger log = quiet_logger();
   TetmeshOptions options;
   options.sliver_passes = 0;
@@ -413,6 +355,33 @@ TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   EXPECT_GT(q.min_dihedral_deg, without + 1.0);
   EXPECT_EQ(run.slivers.total(), sliver_census(mesh, options.min_dihedral_deg).total());
   expect_valid_mesh(model, mesh);
+}
+
+TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
+  // A layer 0.01 thick remeshed with cells of about 0.2: whatever TetGen does, the tets across
+  // it join vertices 0.2 apart on one side to vertices 0.01 above on the other. The remesher's
+  // thin-layer sizing gives the layer's sides cells of about 6 x 0.01 instead.
+  const StructuralModel model = build_model(test::thin_layer_box(8, 0.01));
+  Logger log = quiet_logger();
+  Progress progress(false);
+  RemeshOptions options;
+  options.seeds.num_seeds = 200;
+  const RemeshResult uniform = remesh(model, options, log, progress);
+  options.seeds.thin_layers = true;
+  const RemeshResult sized = remesh(model, options, log, progress);
+  EXPECT_TRUE(uniform.topology.regions_preserved);
+  EXPECT_TRUE(sized.topology.regions_preserved);
+  EXPECT_EQ(sized.seeds.base_seeds, 200);
+  EXPECT_GT(sized.seeds.seeds.size(), 400u);
+  EXPECT_NEAR(sized.seeds.edge_length, uniform.seeds.edge_length, 0.05 * uniform.seeds.edge_length);
+  const VolumeMesh coarse = tetrahedralize(uniform.model, TetmeshOptions{}, log);
+  const VolumeMesh fine = tetrahedralize(sized.model, TetmeshOptions{}, log);
+  const VolumeQuality q0 = measure_volume(coarse), q1 = measure_volume(fine);
+  std::fprintf(stderr, "[figures] thin layer remeshed: %zu seeds min dihedral %.2f deg; thin-layer sizing %zu seeds %.2f deg\n",
+               uniform.seeds.seeds.size(), q0.min_dihedral_deg, sized.seeds.seeds.size(), q1.min_dihedral_deg);
+  EXPECT_LT(q0.min_dihedral_deg, 5.0);
+  EXPECT_GE(q1.min_dihedral_deg, 5.0);  // 6.49 measured
+  expect_valid_mesh(sized.model, fine);
 }
 
 TEST(Tetrahedralize, NeedleFilledSurfacesGetTetgensOwnThresholds) {

@@ -1,0 +1,183 @@
+#include "modules/remesh/layer_sizing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <nanoflann.hpp>
+#include <utility>
+
+#include "framework/core/error.h"
+#include "framework/model/contact_wedges.h"
+
+namespace voroseal {
+
+namespace {
+
+struct PointCloud {
+  const std::vector<Vec3>* points = nullptr;
+  size_t kdtree_get_point_count() const { return points->size(); }
+  double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3,
+                                                   std::uint32_t>;
+using Neighbours = std::vector<std::pair<std::uint32_t, double>>;
+const nanoflann::SearchParams kUnsorted(32, 0.0, false);
+
+// Where the thickness is measured: a surface vertex seen from one part, or the centroid of a
+// triangle (input triangles are often several times as large as the layer's extent).
+struct Sample {
+  int part = -1, vertex = -1;  // vertex -1: a centroid
+  Vec3 position = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();  // the part's area-weighted normal there
+};
+
+std::vector<Sample> thickness_samples(const StructuralModel& model, const ModelTriangles& flat) {
+  std::vector<Sample> samples;
+  for (size_t t = 0; t < flat.triangles.size(); ++t)
+    for (int v : flat.triangles[t]) samples.push_back({flat.part[t], v, model.vertices[v], Vec3::Zero()});
+  auto key = [](const Sample& s) { return std::make_pair(s.part, s.vertex); };
+  std::sort(samples.begin(), samples.end(), [&](const Sample& a, const Sample& b) { return key(a) < key(b); });
+  samples.erase(std::unique(samples.begin(), samples.end(),
+                            [&](const Sample& a, const Sample& b) { return key(a) == key(b); }),
+                samples.end());
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 n = (model.vertices[f[1]] - model.vertices[f[0]]).cross(model.vertices[f[2]] - model.vertices[f[0]]);
+    for (int v : f) {
+      const Sample probe{flat.part[t], v, Vec3::Zero(), Vec3::Zero()};
+      auto it = std::lower_bound(samples.begin(), samples.end(), probe,
+                                 [&](const Sample& a, const Sample& b) { return key(a) < key(b); });
+      it->normal += n;
+    }
+  }
+  for (Sample& s : samples) s.normal.normalize();
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    samples.push_back({flat.part[t], -1, (a + b + c) / 3.0, (b - a).cross(c - a).normalized()});
+  }
+  return samples;
+}
+
+// Lowers size[v] to s + gradation·|x_v − x| for every vertex within reach of x.
+void grade_from(const KdTree& vertices, const Vec3& x, double s, double h, double gradation,
+                std::vector<double>& size, Neighbours& found) {
+  const double reach = (h - s) / gradation;
+  vertices.radiusSearch(x.data(), reach * reach, found, kUnsorted);
+  for (const auto& item : found) size[item.first] = std::min(size[item.first], s + gradation * std::sqrt(item.second));
+}
+
+}  // namespace
+
+LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const LayerSizingOptions& options) {
+  if (!(h > 0.0) || !std::isfinite(h)) throw ParameterError("remesh: the layer sizing needs a positive edge length");
+  if (!(options.ratio > 0.0) || !(options.max_refinement >= 1.0) || !(options.gradation > 0.0) ||
+      !(options.facing_angle_deg >= 0.0 && options.facing_angle_deg < 90.0) || !(options.pinch_angle_deg >= 0.0))
+    throw ParameterError("remesh: layer sizing options out of range");
+  LayerSizing result;
+  result.size.assign(model.vertices.size(), h);
+  const ModelTriangles flat = flatten(model);
+  if (flat.triangles.empty()) return result;
+  const std::vector<Sample> samples = thickness_samples(model, flat);
+
+  // Triangles by centroid: a ray of length t_max from a vertex can only meet triangles whose
+  // centroid lies within t_max + their circumradius bound.
+  const size_t nt = flat.triangles.size();
+  std::vector<Vec3> centroid(nt), tri_normal(nt);
+  double max_radius = 0.0;
+  for (size_t t = 0; t < nt; ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    centroid[t] = (a + b + c) / 3.0;
+    tri_normal[t] = (b - a).cross(c - a).normalized();
+    for (int k = 0; k < 3; ++k) max_radius = std::max(max_radius, (model.vertices[f[k]] - centroid[t]).norm());
+  }
+  const PointCloud centroid_cloud{&centroid};
+  KdTree triangles(3, centroid_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  triangles.buildIndex();
+
+  // Thickness at every sample: the nearest hit of the line along its normal, either way, on a
+  // triangle of another part facing it (normals within facing_angle_deg), not incident to it.
+  const double t_max = h / options.ratio;
+  const double cos_facing = std::cos(options.facing_angle_deg * M_PI / 180.0);
+  const double reach = t_max + max_radius;
+  std::vector<double> thickness(samples.size(), std::numeric_limits<double>::infinity());
+#pragma omp parallel
+  {
+    Neighbours found;
+#pragma omp for schedule(dynamic, 256)
+    for (long i = 0; i < static_cast<long>(samples.size()); ++i) {
+      const Sample& s = samples[i];
+      const Vec3& p = s.position;
+      triangles.radiusSearch(p.data(), reach * reach, found, kUnsorted);
+      double t = t_max;
+      bool hit = false;
+      for (const auto& item : found) {
+        const size_t j = item.first;
+        if (flat.part[j] == s.part) continue;
+        const Triangle& f = flat.triangles[j];
+        if (s.vertex >= 0 && (f[0] == s.vertex || f[1] == s.vertex || f[2] == s.vertex)) continue;
+        const double cosine = s.normal.dot(tri_normal[j]);
+        if (!(std::abs(cosine) >= cos_facing)) continue;
+        const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+        const double along = (a - p).dot(tri_normal[j]) / cosine;  // p + along·n is on the plane
+        if (!(std::abs(along) < t)) continue;
+        const Vec3 x = p + along * s.normal;
+        const Vec3& n = tri_normal[j];
+        if ((b - a).cross(x - a).dot(n) < 0 || (c - b).cross(x - b).dot(n) < 0 || (a - c).cross(x - c).dot(n) < 0)
+          continue;
+        t = std::abs(along);
+        hit = true;
+      }
+      if (hit) thickness[i] = t;
+    }
+  }
+
+  std::vector<Vec3> vertices = model.vertices;
+  const PointCloud vertex_cloud{&vertices};
+  KdTree vertex_tree(3, vertex_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  vertex_tree.buildIndex();
+  Neighbours found;
+  const double min_size = h / options.max_refinement;
+  for (size_t i = 0; i < samples.size(); ++i) {
+    if (!std::isfinite(thickness[i])) continue;
+    ++result.thin_samples;
+    if (thickness[i] < result.thinnest) {
+      result.thinnest = thickness[i];
+      result.thinnest_at = samples[i].position;
+    }
+    const double s = std::clamp(options.ratio * thickness[i], min_size, h);
+    grade_from(vertex_tree, samples[i].position, s, h, options.gradation, result.size, found);
+  }
+  if (!result.refines()) return result;
+
+  // Thin contact wedges keep the size h, falling off at the gradation rate.
+  std::vector<double> floor(model.vertices.size(), 0.0);
+  std::vector<char> tip(model.vertices.size(), 0);
+  for (const ContactWedge& w : thin_contact_wedges(model, options.pinch_angle_deg)) tip[w.a] = tip[w.b] = 1;
+  for (size_t v = 0; v < tip.size(); ++v) {
+    if (!tip[v]) continue;
+    ++result.pinch_vertices;
+    vertex_tree.radiusSearch(model.vertices[v].data(), std::pow((h - min_size) / options.gradation, 2), found,
+                             kUnsorted);
+    for (const auto& item : found)
+      floor[item.first] = std::max(floor[item.first], h - options.gradation * std::sqrt(item.second));
+  }
+  for (size_t v = 0; v < floor.size(); ++v) result.size[v] = std::max(result.size[v], floor[v]);
+  return result;
+}
+
+std::vector<double> density_from_sizing(const std::vector<double>& size, double h) {
+  std::vector<double> rho(size.size());
+  for (size_t i = 0; i < size.size(); ++i) {
+    const double r = h / size[i];
+    rho[i] = r * r * r * r;
+  }
+  return rho;
+}
+
+}  // namespace voroseal
