@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <nanoflann.hpp>
 #include <utility>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/model/contact_wedges.h"
+#include "modules/remesh/triangle_grid.h"
 
 namespace voroseal {
 
@@ -28,7 +31,7 @@ using Neighbours = std::vector<std::pair<std::uint32_t, double>>;
 const nanoflann::SearchParams kUnsorted(32, 0.0, false);
 
 // Where the thickness is measured: a surface vertex seen from one part, or the centroid of a
-// triangle (input triangles are often several times as large as the layer's extent).
+// triangle (input triangles are often larger than the cells a thin layer asks for).
 struct Sample {
   int part = -1, vertex = -1;  // vertex -1: a centroid
   Vec3 position = Vec3::Zero();
@@ -84,61 +87,58 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   if (flat.triangles.empty()) return result;
   const std::vector<Sample> samples = thickness_samples(model, flat);
 
-  // Triangles by centroid: a ray of length t_max from a vertex can only meet triangles whose
-  // centroid lies within t_max + their circumradius bound.
+  // Triangles in a grid of their bounding boxes, cells about a triangle wide (input triangles
+  // vary by orders of magnitude: a radius search around centroids would have to reach as far
+  // as the largest one).
+  const double t_max = h / options.ratio;
   const size_t nt = flat.triangles.size();
-  std::vector<Vec3> centroid(nt), tri_normal(nt);
-  double max_radius = 0.0;
+  std::vector<Vec3> tri_normal(nt);
+  double mean_edge = 0.0;
   for (size_t t = 0; t < nt; ++t) {
     const Triangle& f = flat.triangles[t];
     const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
-    centroid[t] = (a + b + c) / 3.0;
-    tri_normal[t] = (b - a).cross(c - a).normalized();
-    for (int k = 0; k < 3; ++k) max_radius = std::max(max_radius, (model.vertices[f[k]] - centroid[t]).norm());
+    tri_normal[t] = (b - a).cross(c - a).normalized();  // zero on a degenerate triangle: faces nothing
+    mean_edge += ((b - a).norm() + (c - b).norm() + (a - c).norm()) / (3.0 * static_cast<double>(nt));
   }
-  const PointCloud centroid_cloud{&centroid};
-  KdTree triangles(3, centroid_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  triangles.buildIndex();
+  TriangleGrid grid;
+  grid.reset(std::max(mean_edge, 2.0 * t_max));
+  for (size_t t = 0; t < nt; ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    grid.insert(static_cast<int>(t), a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c));
+  }
 
   // Thickness at every sample: the nearest hit of the line along its normal, either way, on a
   // triangle of another part facing it (normals within facing_angle_deg), not incident to it.
-  const double t_max = h / options.ratio;
   const double cos_facing = std::cos(options.facing_angle_deg * M_PI / 180.0);
-  const double reach = t_max + max_radius;
   std::vector<double> thickness(samples.size(), std::numeric_limits<double>::infinity());
-#pragma omp parallel
-  {
-    Neighbours found;
-#pragma omp for schedule(dynamic, 256)
-    for (long i = 0; i < static_cast<long>(samples.size()); ++i) {
-      const Sample& s = samples[i];
-      const Vec3& p = s.position;
-      triangles.radiusSearch(p.data(), reach * reach, found, kUnsorted);
-      double t = t_max;
-      bool hit = false;
-      for (const auto& item : found) {
-        const size_t j = item.first;
-        if (flat.part[j] == s.part) continue;
-        const Triangle& f = flat.triangles[j];
-        if (s.vertex >= 0 && (f[0] == s.vertex || f[1] == s.vertex || f[2] == s.vertex)) continue;
-        const double cosine = s.normal.dot(tri_normal[j]);
-        if (!(std::abs(cosine) >= cos_facing)) continue;
-        const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
-        const double along = (a - p).dot(tri_normal[j]) / cosine;  // p + along·n is on the plane
-        if (!(std::abs(along) < t)) continue;
-        const Vec3 x = p + along * s.normal;
-        const Vec3& n = tri_normal[j];
-        if ((b - a).cross(x - a).dot(n) < 0 || (c - b).cross(x - b).dot(n) < 0 || (a - c).cross(x - c).dot(n) < 0)
-          continue;
-        t = std::abs(along);
-        hit = true;
-      }
-      if (hit) thickness[i] = t;
-    }
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long i = 0; i < static_cast<long>(samples.size()); ++i) {
+    const Sample& s = samples[i];
+    const Vec3& p = s.position;
+    const Vec3 half = t_max * s.normal.cwiseAbs();  // the segment p ± t_max n, as a box
+    double t = t_max;
+    bool hit = false;
+    grid.query(p - half, p + half, [&](int j) {
+      if (flat.part[j] == s.part) return;
+      const Triangle& f = flat.triangles[j];
+      if (s.vertex >= 0 && (f[0] == s.vertex || f[1] == s.vertex || f[2] == s.vertex)) return;
+      const Vec3& n = tri_normal[j];
+      const double cosine = s.normal.dot(n);
+      if (!(std::abs(cosine) >= cos_facing)) return;
+      const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+      const double along = (a - p).dot(n) / cosine;  // p + along·normal is on the triangle's plane
+      if (!(std::abs(along) < t)) return;
+      const Vec3 x = p + along * s.normal;
+      if ((b - a).cross(x - a).dot(n) < 0 || (c - b).cross(x - b).dot(n) < 0 || (a - c).cross(x - c).dot(n) < 0)
+        return;
+      t = std::abs(along);
+      hit = true;
+    });
+    if (hit) thickness[i] = t;
   }
 
-  std::vector<Vec3> vertices = model.vertices;
-  const PointCloud vertex_cloud{&vertices};
+  const PointCloud vertex_cloud{&model.vertices};
   KdTree vertex_tree(3, vertex_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   vertex_tree.buildIndex();
   Neighbours found;

@@ -22,33 +22,34 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   std::vector<double> density = options.vertex_density;
   if (options.thin_layers && !density.empty())
     throw ParameterError("remesh: a density and the thin-layer sizing exclude each other");
-  const double area = model.area();
+  ModelGeometry geometry(model, density);
   int n = options.num_seeds;
   if (n <= 0) {
     if (!(options.edge_length > 0.0))
       throw ParameterError("remesh: give a number of seeds or a positive target edge length");
-    n = seed_count_for_edge_length(area, options.edge_length);
+    n = seed_count_for_edge_length(geometry.area(), options.edge_length);
   }
   const int base_seeds = n;
   char line[300];
   LayerSizing layers;
-  if (options.thin_layers && area > 0.0) {
-    const double h = edge_length_for_seeds(area, n);
+  if (options.thin_layers) {
+    const double h = edge_length_for_seeds(geometry.area(), n);
     layers = thin_layer_sizing(model, h, options.layer_sizing);
-    if (layers.refines()) density = density_from_sizing(layers.size, h);
-  }
-  const ModelGeometry geometry(model, density);
-  if (!density.empty() && options.thin_layers) {
-    // As many seeds where ρ = 1 as the resolution asks for: N grows by ∫√ρ / area.
-    const double seeds = std::round(static_cast<double>(n) * geometry.root_mass() / geometry.area());
-    if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the thin-layer sizing gives too many seeds");
-    n = std::max(n, static_cast<int>(seeds));
-    std::snprintf(line, sizeof line,
-                  "remesh: thin layers: %d thickness samples on layers thinner than %.4g (thinnest %.4g), "
-                  "%d seeds more for them",
-                  layers.thin_samples, edge_length_for_seeds(area, base_seeds) / options.layer_sizing.ratio,
-                  layers.thinnest, n - base_seeds);
-    log.info(line);
+    if (layers.refines()) {
+      density = density_from_sizing(layers.size, h);
+      geometry = ModelGeometry(model, density);
+      // As many seeds where ρ = 1 as the resolution asks for: N grows by ∫√ρ / area.
+      const double seeds = std::round(static_cast<double>(n) * geometry.root_mass() / geometry.area());
+      if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the thin-layer sizing gives too many seeds");
+      n = std::max(n, static_cast<int>(seeds));
+      const Vec3 at = layers.thinnest_at + model.frame.origin;
+      std::snprintf(line, sizeof line,
+                    "remesh: thin layers: %d thickness samples on layers thinner than %.4g (thinnest %.4g at "
+                    "(%.10g, %.10g, %.10g)), %d seeds more for them",
+                    layers.thin_samples, h / options.layer_sizing.ratio, layers.thinnest, at.x(), at.y(), at.z(),
+                    n - base_seeds);
+      log.info(line);
+    }
   }
   std::snprintf(line, sizeof line, "remesh: %d seeds on %zu triangles (area %.6g)", n, geometry.triangles().size(),
                 geometry.area());
@@ -62,7 +63,6 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   result.thin_layer_samples = layers.thin_samples;
   result.pinch_vertices = layers.pinch_vertices;
   result.thinnest_layer = layers.refines() ? layers.thinnest : 0.0;
-  result.thinnest_layer_at = layers.thinnest_at;
   return result;
 }
 

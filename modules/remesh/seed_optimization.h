@@ -43,7 +43,6 @@ struct SeedOptimizationResult {
   int base_seeds = 0;
   int thin_layer_samples = 0, pinch_vertices = 0;
   double thinnest_layer = 0.0;
-  Vec3 thinnest_layer_at = Vec3::Zero();
   double alpha = 0.0;                // the boundary weight used
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;

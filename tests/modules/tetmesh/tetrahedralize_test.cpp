@@ -380,7 +380,7 @@ TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
   std::fprintf(stderr, "[figures] thin layer remeshed: %zu seeds min dihedral %.2f deg; thin-layer sizing %zu seeds %.2f deg\n",
                uniform.seeds.seeds.size(), q0.min_dihedral_deg, sized.seeds.seeds.size(), q1.min_dihedral_deg);
   EXPECT_LT(q0.min_dihedral_deg, 5.0);
-  EXPECT_GE(q1.min_dihedral_deg, 5.0);  // 6.49 measured
+  EXPECT_GE(q1.min_dihedral_deg, 5.0);  // 7.57 (5.9-7.4 with random seeds 2-7; 0.5-2.6 without sizing)
   expect_valid_mesh(sized.model, fine);
 }
 
