@@ -10,8 +10,9 @@
 // the layer. Next to a thin wedge at a contact (a pinch-out, where a layer ends between two
 // surfaces meeting at a few degrees) the size stays h and falls off at the same rate: finer
 // cells there would only resolve the input's wiggles at the tip into thinner wedges, and a
-// wedge's angle bounds the dihedral angles of the tets in it whatever the size (measured: the
-// same refinement without it took modelA6 from 1.5 to 0.8 deg at the pinch-out).
+// wedge's angle bounds the dihedral angles of the tets in it whatever the size (measured on
+// modelA6 at 8000 seeds: 3.5 deg with it, 1.9 deg without, 0.0 deg without and cells down to
+// h / 8, all at pinch-outs).
 //
 // The size becomes the CVT density rho = (h / size)^4 at the model vertices: the cells of a 2D
 // CVT have a diameter proportional to rho^(-1/4) (Du, Faber, Gunzburger 1999).

@@ -57,7 +57,8 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
                                       Progress& progress);
 
 /// The same from given initial seeds on a prepared geometry (options.num_seeds, edge_length,
-/// vertex_density and random_seed are ignored).
+/// vertex_density, thin_layers and random_seed are ignored; the result's vertex_density is left
+/// empty).
 SeedOptimizationResult optimize_seeds(const ModelGeometry& geometry, std::vector<Vec3> initial,
                                       const SeedOptions& options, Logger& log, Progress& progress);
 
