@@ -146,10 +146,6 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   for (size_t i = 0; i < samples.size(); ++i) {
     if (!std::isfinite(thickness[i])) continue;
     ++result.thin_samples;
-    if (thickness[i] < result.thinnest) {
-      result.thinnest = thickness[i];
-      result.thinnest_at = samples[i].position;
-    }
     const double s = std::clamp(options.ratio * thickness[i], min_size, h);
     grade_from(vertex_tree, samples[i].position, s, h, options.gradation, result.size, found);
   }
@@ -159,15 +155,33 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   std::vector<double> floor(model.vertices.size(), 0.0);
   std::vector<char> tip(model.vertices.size(), 0);
   for (const ContactWedge& w : thin_contact_wedges(model, options.pinch_angle_deg)) tip[w.a] = tip[w.b] = 1;
+  std::vector<Vec3> tips;
   for (size_t v = 0; v < tip.size(); ++v) {
     if (!tip[v]) continue;
-    ++result.pinch_vertices;
+    tips.push_back(model.vertices[v]);
     vertex_tree.radiusSearch(model.vertices[v].data(), std::pow((h - min_size) / options.gradation, 2), found,
                              kUnsorted);
     for (const auto& item : found)
       floor[item.first] = std::max(floor[item.first], h - options.gradation * std::sqrt(item.second));
   }
+  result.pinch_vertices = static_cast<int>(tips.size());
   for (size_t v = 0; v < floor.size(); ++v) result.size[v] = std::max(result.size[v], floor[v]);
+
+  // The thinnest layer away from the tips (at a tip every layer is as thin as one likes).
+  const PointCloud tip_cloud{&tips};
+  KdTree tip_tree(3, tip_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tip_tree.buildIndex();
+  for (size_t i = 0; i < samples.size(); ++i) {
+    if (!(thickness[i] < result.thinnest)) continue;
+    if (!tips.empty()) {
+      std::uint32_t nearest = 0;
+      double d2 = 0.0;
+      tip_tree.knnSearch(samples[i].position.data(), 1, &nearest, &d2);
+      if (d2 < h * h) continue;
+    }
+    result.thinnest = thickness[i];
+    result.thinnest_at = samples[i].position;
+  }
   return result;
 }
 

@@ -38,8 +38,10 @@ struct LayerSizing {
   /// Thickness samples (part vertices, triangle centroids) on a layer thinner than h / ratio.
   int thin_samples = 0;
   int pinch_vertices = 0;    // contact vertices at a wedge thinner than pinch_angle_deg
-  double thinnest = std::numeric_limits<double>::infinity();  // thinnest layer found
-  Vec3 thinnest_at = Vec3::Zero();                            // where (local frame)
+  /// The thinnest layer farther than h from every pinch-out tip (+inf: none), and where (local
+  /// frame).
+  double thinnest = std::numeric_limits<double>::infinity();
+  Vec3 thinnest_at = Vec3::Zero();
   bool refines() const { return thin_samples > 0; }
 };
 

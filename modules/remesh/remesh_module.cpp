@@ -162,7 +162,8 @@ class RemeshModule final : public Module {
                                {"seeds_added", static_cast<long>(r.seeds.size()) - r.base_seeds},
                                {"thin_samples", r.thin_layer_samples},
                                {"pinch_vertices", r.pinch_vertices},
-                               {"thinnest", r.thinnest_layer},
+                               {"thinnest", std::isfinite(r.thinnest_layer) ? nlohmann::json(r.thinnest_layer)
+                                                                            : nlohmann::json()},
                                {"edge_length", r.edge_length}};
     report["optimizer"] = to_string(options.optimizer.kind);
     report["alpha"] = r.alpha;

@@ -43,11 +43,14 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
       if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the thin-layer sizing gives too many seeds");
       n = std::max(n, static_cast<int>(seeds));
       const Vec3 at = layers.thinnest_at + model.frame.origin;
+      char thinnest[160] = "all next to pinch-outs";
+      if (std::isfinite(layers.thinnest))
+        std::snprintf(thinnest, sizeof thinnest, "thinnest %.4g at (%.10g, %.10g, %.10g)", layers.thinnest, at.x(),
+                      at.y(), at.z());
       std::snprintf(line, sizeof line,
-                    "remesh: thin layers: %d thickness samples on layers thinner than %.4g (thinnest %.4g at "
-                    "(%.10g, %.10g, %.10g)), %d seeds more for them",
-                    layers.thin_samples, h / options.layer_sizing.ratio, layers.thinnest, at.x(), at.y(), at.z(),
-                    n - base_seeds);
+                    "remesh: thin layers: %d thickness samples on layers thinner than %.4g (%s), %d seeds more "
+                    "for them",
+                    layers.thin_samples, h / options.layer_sizing.ratio, thinnest, n - base_seeds);
       log.info(line);
     }
   }
@@ -62,7 +65,7 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   result.base_seeds = base_seeds;
   result.thin_layer_samples = layers.thin_samples;
   result.pinch_vertices = layers.pinch_vertices;
-  result.thinnest_layer = layers.refines() ? layers.thinnest : 0.0;
+  result.thinnest_layer = layers.thinnest;
   return result;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,7 @@ struct SeedOptimizationResult {
   /// and what the sizing found.
   int base_seeds = 0;
   int thin_layer_samples = 0, pinch_vertices = 0;
-  double thinnest_layer = 0.0;
+  double thinnest_layer = std::numeric_limits<double>::infinity();  // away from pinch-out tips
   double alpha = 0.0;                // the boundary weight used
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;

@@ -130,6 +130,8 @@ TEST(LayerSizing, PinchOutTipKeepsTheCellSize) {
   const LayerSizing sizing = thin_layer_sizing(model, h, options);
   ASSERT_TRUE(sizing.refines());
   EXPECT_GT(sizing.pinch_vertices, 0);
+  // Layers thinner than h / 6 only within h of the tip: no thinnest layer away from it.
+  EXPECT_TRUE(std::isinf(sizing.thinnest));
   options.pinch_angle_deg = 0.0;
   const LayerSizing unanchored = thin_layer_sizing(model, h, options);
   EXPECT_EQ(unanchored.pinch_vertices, 0);
