@@ -58,7 +58,8 @@ TEST(LayerSizing, NoLayerThinnerThanTheCellsKeepsTheSize) {
   const LayerSizing sizing = thin_layer_sizing(model, 0.5);
   EXPECT_FALSE(sizing.refines());
   for (double s : sizing.size) EXPECT_EQ(s, 0.5);
-  // Finer cells see the layers (0.5 thick) as thin: 0.05 > 0.5 / 6 is not, 3.5 is.
+  // Cells of 0.05 see no thin layer either; cells of 3.5 see the layers 0.5 thick as thin
+  // (0.5 < 3.5 / 6).
   EXPECT_FALSE(thin_layer_sizing(model, 0.05).refines());
   const LayerSizing coarse = thin_layer_sizing(model, 3.5);
   EXPECT_TRUE(coarse.refines());
