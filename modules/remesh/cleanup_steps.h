@@ -209,10 +209,10 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
 // than 30 degrees it leaves around it: it is made when there are fewer, none gets sharper than 15
 // degrees (or than the sharpest one there, when that already is) nor by more than 5 degrees
 // sharper than the sharpest one there was, and the sum of Q there loses at most 0.3 per triangle
-// fixed. First each vertex of a sharp triangle alone (along
-// its contact, or around it in its part), then two of its vertices together (the apex and a base
-// vertex of a triangle in a strip between two contacts); edge flips after each pass, up to
-// `passes` passes. Returns the moves made. CloudSpin_fixed at 5,000 seeds: 1.25 % -> 0.87 %.
+// fixed. First each vertex of a sharp triangle alone (along its contact, or around it in its
+// part), then two of its vertices together (the apex and a base vertex of a triangle in a strip
+// between two contacts); edge flips after each pass, up to `passes` passes. Returns the moves
+// made. CloudSpin_fixed at 5,000 seeds: 1.25 % -> 0.87 %.
 int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int passes, double flatness_deg,
                            int& flips);
 

@@ -10,23 +10,13 @@
 
 #include "framework/core/error.h"
 #include "framework/model/contact_wedges.h"
+#include "modules/remesh/point_cloud.h"
 #include "modules/remesh/triangle_grid.h"
 
 namespace voroseal {
 
 namespace {
 
-struct PointCloud {
-  const std::vector<Vec3>* points = nullptr;
-  size_t kdtree_get_point_count() const { return points->size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return (*points)[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3,
-                                                   std::uint32_t>;
 using Neighbours = std::vector<std::pair<std::uint32_t, double>>;
 const nanoflann::SearchParams kUnsorted(32, 0.0, false);
 
@@ -67,7 +57,7 @@ std::vector<Sample> thickness_samples(const StructuralModel& model, const ModelT
 }
 
 // Lowers size[v] to s + gradation·|x_v − x| for every vertex within reach of x.
-void grade_from(const KdTree& vertices, const Vec3& x, double s, double h, double gradation,
+void grade_from(const PointKdTree& vertices, const Vec3& x, double s, double h, double gradation,
                 std::vector<double>& size, Neighbours& found) {
   const double reach = (h - s) / gradation;
   vertices.radiusSearch(x.data(), reach * reach, found, kUnsorted);
@@ -138,8 +128,8 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
     if (hit) thickness[i] = t;
   }
 
-  const PointCloud vertex_cloud{&model.vertices};
-  KdTree vertex_tree(3, vertex_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  const PointCloud vertex_cloud{model.vertices.data(), model.vertices.size()};
+  PointKdTree vertex_tree(3, vertex_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   vertex_tree.buildIndex();
   Neighbours found;
   const double min_size = h / options.max_refinement;
@@ -152,7 +142,6 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   if (!result.refines()) return result;
 
   // Thin contact wedges keep the size h, falling off at the gradation rate.
-  std::vector<double> floor(model.vertices.size(), 0.0);
   std::vector<char> tip(model.vertices.size(), 0);
   for (const ContactWedge& w : thin_contact_wedges(model, options.pinch_angle_deg)) tip[w.a] = tip[w.b] = 1;
   std::vector<Vec3> tips;
@@ -162,15 +151,14 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
     vertex_tree.radiusSearch(model.vertices[v].data(), std::pow((h - min_size) / options.gradation, 2), found,
                              kUnsorted);
     for (const auto& item : found)
-      floor[item.first] = std::max(floor[item.first], h - options.gradation * std::sqrt(item.second));
+      result.size[item.first] = std::max(result.size[item.first], h - options.gradation * std::sqrt(item.second));
   }
   result.pinch_vertices = static_cast<int>(tips.size());
-  for (size_t v = 0; v < floor.size(); ++v) result.size[v] = std::max(result.size[v], floor[v]);
 
   // The thinnest layer away from the tips (at a tip every layer is as thin as one likes).
-  const PointCloud tip_cloud{&tips};
-  KdTree tip_tree(3, tip_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tip_tree.buildIndex();
+  const PointCloud tip_cloud{tips.data(), tips.size()};
+  PointKdTree tip_tree(3, tip_cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  if (!tips.empty()) tip_tree.buildIndex();
   for (size_t i = 0; i < samples.size(); ++i) {
     if (!(thickness[i] < result.thinnest)) continue;
     if (!tips.empty()) {

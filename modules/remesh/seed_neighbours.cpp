@@ -9,23 +9,11 @@
 #include <limits>
 #include <nanoflann.hpp>
 
+#include "modules/remesh/point_cloud.h"
+
 namespace voroseal {
 
 namespace {
-
-struct SeedCloud {
-  const Vec3* points = nullptr;
-  size_t count = 0;
-  size_t kdtree_get_point_count() const { return count; }
-  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>, SeedCloud, 3,
-                                                   std::uint32_t>;
 
 // k nearest with ties broken by index, optionally skipping one index (the query seed itself).
 class NearestSet {
@@ -99,8 +87,8 @@ class NearestOne {
 }  // namespace
 
 struct SeedNeighbours::Tree {
-  SeedCloud cloud;
-  std::unique_ptr<KdTree> index;
+  PointCloud cloud;
+  std::unique_ptr<PointKdTree> index;
 };
 
 SeedNeighbours::SeedNeighbours() = default;
@@ -113,7 +101,7 @@ const SeedNeighbours::Tree& SeedNeighbours::tree() const {
     auto t = std::make_unique<Tree>();
     t->cloud.points = seeds_;
     t->cloud.count = static_cast<size_t>(n_);
-    t->index = std::make_unique<KdTree>(3, t->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
+    t->index = std::make_unique<PointKdTree>(3, t->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(12));
     if (n_ > 0) t->index->buildIndex();
     tree_ = std::move(t);
   }
