@@ -202,6 +202,14 @@ TEST(Optimizer, RejectsBadParameters) {
   options.boundary_weight = -1.0;
   options.vertex_density = {1.0, 2.0};  // wrong size
   EXPECT_THROW(optimize_seeds(model, options, log, progress), ParameterError);
+  options.vertex_density.assign(model.vertices.size(), 1.0);  // a density and the thin-layer sizing
+  options.thin_layers = true;
+  EXPECT_THROW(optimize_seeds(model, options, log, progress), ParameterError);
+  options.vertex_density.clear();
+  options.layer_sizing.ratio = 0.0;
+  EXPECT_THROW(optimize_seeds(model, options, log, progress), ParameterError);
+  options.thin_layers = false;
+  options.layer_sizing = {};
   if (!ceres_available()) {
     options.vertex_density.clear();
     options.optimizer.kind = OptimizerKind::Ceres;
