@@ -48,8 +48,8 @@ int Editor::closed_fan_size(int v, int part) {
   return n;
 }
 
-void Editor::rollback() {
-  for (auto it = journal_.rbegin(); it != journal_.rend(); ++it) {
+void Editor::rollback_to(size_t mark) {
+  for (auto it = journal_.rbegin(); it != journal_.rend() - static_cast<std::ptrdiff_t>(mark); ++it) {
     switch (it->kind) {
       case Change::Moved:
         s_.vertices[it->index] = it->position;
@@ -73,8 +73,7 @@ void Editor::rollback() {
         break;
     }
   }
-  journal_.clear();
-  open_ = false;
+  journal_.resize(mark);
 }
 
 Violations Editor::violations(const std::vector<int>& triangles) {

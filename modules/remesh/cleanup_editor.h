@@ -183,7 +183,14 @@ class Editor {
     journal_.clear();
     open_ = false;
   }
-  void rollback();
+  void rollback() {
+    rollback_to(0);
+    open_ = false;
+  }
+  // Inside a transaction: the journal's length now, and undoing the edits made since (the
+  // transaction stays open), for trying edits within a larger edit that may be undone whole.
+  size_t mark() const { return journal_.size(); }
+  void rollback_to(size_t mark);
   // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
   void move(int v, const Vec3& x, bool update_grid = true) {
     if (open_) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0});

@@ -216,6 +216,21 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
 int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int passes, double flatness_deg,
                            int& flips);
 
+// ---- pinch-outs (cleanup_zip.cpp) ----
+
+// A layer that ends in a pinch-out (parts P and Q bounding a region between them meet along a
+// contact where a third part K runs on between the regions beyond them) and stays thinner than
+// `max_thickness` (d_min) past it closes there: its two sides zip into K from the contact on,
+// edge by edge, while the wedge at the front is thinner than `max_wedge_deg` and the apexes of
+// the two sides are closer than `max_thickness`. No tet mesh keeping the surfaces fills a
+// layer much thinner than its triangles without flat tets (remeshed modelA6: a tongue 9-25 m
+// thick under 250 m triangles, 3.9 deg); closed, the layer ends where it is thick enough.
+// Each step pairs the two apexes of the front edge: merged when close, else the nearer one
+// inserted into the other side's triangle, else the crossing of their edges inserted into
+// both, then the two coincident triangles become one of K (middle of the two sides, so the
+// surface moves by at most half the thickness). Zipped vertices are pinned. Returns the steps.
+int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg);
+
 // ---- wedges (cleanup_wedges.cpp) ----
 
 // Moves the vertices of wedge tets flatter than `bound_deg` (their edge's and apexes') to where

@@ -52,6 +52,10 @@ struct CleanupOptions {
   /// (fault tip) closer to a part it touches than min_feature and than tan(this) times the
   /// triangles there joins the part. 0 disables both.
   double wedge_dihedral_deg = 8.0;
+  /// Layers ending in a pinch-out and thinner than min_feature past it close there (their two
+  /// sides zip into the part that runs on beyond the pinch-out) while the wedge at the front is
+  /// thinner than this (degrees); see zip_pinch_outs in cleanup_steps.h. 0 disables it.
+  double zip_wedge_deg = 0.0;
 };
 
 struct CleanupReport {
@@ -63,6 +67,7 @@ struct CleanupReport {
   int sharp_moves = 0;        // moves leaving fewer triangles sharper than 30 degrees
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int tips_joined = 0;        // free border vertices joined to the part they nearly touch
+  int pinch_zips = 0;         // steps closing layers thinner than min_feature past a pinch-out
   int flips = 0;
   int smoothing_passes = 0;
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed

@@ -101,6 +101,12 @@ class RemeshModule final : public Module {
                      "with --thin-layers: cells at most this many times the layer thickness", 0.5, 1e6));
     p.push_back(spec("layer-refinement", ParameterType::Double, LayerSizingOptions{}.max_refinement,
                      "with --thin-layers: cells at most this many times smaller than elsewhere", 1.0, 100.0));
+    p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
+                     "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
+                     "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there"));
+    p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
+                     "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
+                     0.1, 90.0));
     p.push_back(spec("cleanup", ParameterType::Bool, true, "clean the dual mesh up: valence-3 vertices, needles, flips, smoothing, repairs (--no-cleanup keeps the raw dual mesh)"));
     p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
                      "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
@@ -136,6 +142,7 @@ class RemeshModule final : public Module {
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
     remesh_options.clean_up = parameters.get_bool("cleanup");
+    if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
     SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
     // The seeds are written before mesh building, so that they are there whatever happens next.
     if (parameters.has("dump-seeds")) {
@@ -193,6 +200,7 @@ class RemeshModule final : public Module {
                          {"sharp_moves", result.cleanup.sharp_moves},
                          {"wedge_moves", result.cleanup.wedge_moves},
                          {"tips_joined", result.cleanup.tips_joined},
+                         {"pinch_zips", result.cleanup.pinch_zips},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},

@@ -140,6 +140,82 @@ SurfaceSoup thin_layer_box(int n, double thickness) {
   return soup;
 }
 
+SurfaceSoup pinch_out_tongue_box(int n, double thickness, double tip, double opens) {
+  SurfaceSoup soup;
+  soup.source = "pinch_out_tongue_box";
+  const int i_tip = static_cast<int>(std::lround(tip * n));
+  auto height = [&](double x) {  // of the upper horizon above the lower one
+    if (x <= tip) return 0.0;
+    if (x <= opens) return thickness;
+    return thickness + (0.25 - thickness) * (x - opens) / (1.0 - opens);
+  };
+  // Levels: 0 bottom, 1 lower, 2 upper (the lower's vertex where they meet), 3 top.
+  std::vector<int> index(4 * (n + 1) * (n + 1), -1);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  auto id = [&](int i, int j, int k) -> int {
+    if (k == 2 && i <= i_tip) k = 1;
+    int& slot = index[(k * (n + 1) + j) * (n + 1) + i];
+    if (slot >= 0) return slot;
+    const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n;
+    Vec3 p(x, y, k == 0 ? 0.0 : k == 3 ? 1.0 : 0.5 + (k == 2 ? height(x) : 0.0));
+    if (k == 2 && i < n && j > 0 && j < n) {
+      p.x() += jitter(rng) / n;
+      p.y() += jitter(rng) / n;
+      p.z() = 0.5 + height(p.x());
+    }
+    slot = static_cast<int>(soup.points.size());
+    soup.points.push_back(p);
+    return slot;
+  };
+  auto add_group = [&](const std::string& name, SurfaceKind kind) {
+    soup.groups.push_back({name, name, kind, ""});
+    return static_cast<int>(soup.groups.size()) - 1;
+  };
+  // Polygon (a, b, c, d) as two triangles, split along a–c or (`other`) b–d; a quad whose two
+  // left corners coincide (the pinch-out) is one triangle.
+  auto quad = [&](int g, int a, int b, int c, int d, bool other = false) {
+    std::vector<Triangle> halves;
+    if (a == d)
+      halves = {Triangle{a, b, c}};
+    else if (b == c)
+      halves = {Triangle{a, b, d}};
+    else
+      halves = other ? std::vector<Triangle>{{a, b, d}, {b, c, d}} : std::vector<Triangle>{{a, b, c}, {a, c, d}};
+    for (const Triangle& t : halves) {
+      soup.triangles.push_back(t);
+      soup.triangle_group.push_back(g);
+    }
+  };
+  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
+  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
+  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
+  const int low = add_group("lower", SurfaceKind::Horizon), up = add_group("upper", SurfaceKind::Horizon);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
+      quad(zmax, id(a, b, 3), id(a + 1, b, 3), id(a + 1, b + 1, 3), id(a, b + 1, 3));
+      quad(low, id(a, b, 1), id(a + 1, b, 1), id(a + 1, b + 1, 1), id(a, b + 1, 1));
+      if (a >= i_tip) quad(up, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2), true);
+    }
+  for (int a = 0; a < n; ++a)
+    for (int k = 0; k < 3; ++k) {
+      // The sides y = 0 and y = 1 over the levels of the lattice columns a and a + 1; the layer
+      // band (levels 1 to 2) closes at the pinch-out.
+      if (k == 1 && a + 1 <= i_tip) continue;
+      quad(ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
+      quad(ymax, id(a + 1, n, k), id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1));
+    }
+  for (int a = 0; a < n; ++a) {
+    // x = 0 lies before the pinch-out: bottom to lower, lower to top.
+    quad(xmin, id(0, a, 0), id(0, a, 1), id(0, a + 1, 1), id(0, a + 1, 0));
+    quad(xmin, id(0, a, 1), id(0, a, 3), id(0, a + 1, 3), id(0, a + 1, 1));
+  }
+  for (int a = 0; a < n; ++a)
+    for (int k = 0; k < 3; ++k) quad(xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
+  return soup;
+}
+
 void append(SurfaceSoup& a, const SurfaceSoup& b) {
   const int offset = static_cast<int>(a.points.size());
   const int goffset = static_cast<int>(a.groups.size());

@@ -29,6 +29,15 @@ SurfaceSoup pinch_out_prism(double angle_deg);
 /// 0, 0.25, lower, upper, 0.75, 1. Three regions.
 SurfaceSoup thin_layer_box(int n, double thickness);
 
+/// Unit box cut by horizon "lower" (z = 0.5) and horizon "upper", which leaves it at the
+/// pinch-out line x = `tip` (a lattice line) and runs `thickness` above it up to x = `opens`,
+/// then rises to z = 0.75 at x = 1: a layer ending in a long thin tongue, like a pinch-out of
+/// the real models. n x n lattices; the upper horizon's interior vertices are moved by up to
+/// ±0.3 cell and its quads split along the other diagonal, so that the two sides of the layer
+/// do not line up. Four parts meet along the pinch-out: "lower" before and under the tongue,
+/// "upper" over it. Three regions.
+SurfaceSoup pinch_out_tongue_box(int n, double thickness, double tip = 0.25, double opens = 0.75);
+
 /// Appends b to a (points, triangles, groups).
 void append(SurfaceSoup& a, const SurfaceSoup& b);
 
