@@ -228,7 +228,10 @@ int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int pas
 // Each step pairs the two apexes of the front edge: merged when close, else the nearer one
 // inserted into the other side's triangle, else the crossing of their edges inserted into
 // both, then the two coincident triangles become one of K (middle of the two sides, so the
-// surface moves by at most half the thickness). Zipped vertices are pinned. Returns the steps.
+// surface moves by at most half the thickness). Zipped vertices are pinned. A step that would
+// close two stretches of the pinch-out at once (a pocket of the layer beyond) is refused, and
+// the whole zip is undone when it leaves more violations than before, folds aside (a front that
+// stops in a thin layer is one; the repair opens it). Returns the steps.
 int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg);
 
 // ---- wedges (cleanup_wedges.cpp) ----

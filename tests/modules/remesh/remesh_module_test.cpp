@@ -139,6 +139,27 @@ TEST(RemeshModule, ThinLayersAddSeedsOnTheLayerAndReportThem) {
   EXPECT_THROW(run({{"thin-layers", true}, {"layer-refinement", 0.5}}), ParameterError);
 }
 
+TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
+  // A tongue 0.01 thick under cells of about 0.15 (d_min 0.02): --zip-pinch-outs closes it; a
+  // --zip-wedge under the tongue's wedges (about 4 deg at its tip) leaves it open.
+  auto run = [](nlohmann::json extra) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    harness.context.model = std::make_shared<StructuralModel>(build_model(test::pinch_out_tongue_box(8, 0.01)));
+    nlohmann::json values = {{"seeds", 300}};
+    values.update(extra);
+    harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
+    return harness.context.report.at("remesh");
+  };
+  const nlohmann::json plain = run(nlohmann::json::object());
+  EXPECT_EQ(plain.at("cleanup").at("pinch_zips").get<int>(), 0);
+  const nlohmann::json zipped = run({{"zip-pinch-outs", true}});
+  EXPECT_GT(zipped.at("cleanup").at("pinch_zips").get<int>(), 10);
+  EXPECT_TRUE(zipped.at("topology").at("regions_preserved").get<bool>());
+  EXPECT_TRUE(zipped.at("valid").get<bool>());
+  EXPECT_EQ(run({{"zip-pinch-outs", true}, {"zip-wedge", 0.5}}).at("cleanup").at("pinch_zips").get<int>(), 0);
+  EXPECT_THROW(run({{"zip-pinch-outs", true}, {"zip-wedge", 0.0}}), ParameterError);
+}
+
 TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
   // A fault crossing the horizon without a contact (the input itself is not conformal): the
   // remeshed surfaces cross where the input's do, which no clean-up can undo. The output is
