@@ -8,6 +8,52 @@
 
 namespace voroseal::test {
 
+namespace {
+
+// Groups and quads of a soup being built.
+struct SoupWriter {
+  SurfaceSoup& soup;
+  int group(const std::string& name, SurfaceKind kind) {
+    soup.groups.push_back({name, name, kind, ""});
+    return static_cast<int>(soup.groups.size()) - 1;
+  }
+  // Quad (a, b, c, d) as two triangles, split along a–c or (`other`) b–d; a quad with two
+  // corners on one point (a layer closing at a pinch-out) is one triangle.
+  void quad(int g, int a, int b, int c, int d, bool other = false) {
+    std::vector<Triangle> halves;
+    if (a == d)
+      halves = {Triangle{a, b, c}};
+    else if (b == c)
+      halves = {Triangle{a, b, d}};
+    else
+      halves = other ? std::vector<Triangle>{{a, b, d}, {b, c, d}} : std::vector<Triangle>{{a, b, c}, {a, c, d}};
+    for (const Triangle& t : halves) {
+      soup.triangles.push_back(t);
+      soup.triangle_group.push_back(g);
+    }
+  }
+};
+
+// The groups of a box cut by two horizons.
+struct LayerBoxGroups {
+  int zmin, zmax, ymin, ymax, xmin, xmax, lower, upper;
+};
+
+LayerBoxGroups layer_box_groups(SoupWriter& w) {
+  LayerBoxGroups g{};
+  g.zmin = w.group("zmin", SurfaceKind::Boundary);
+  g.zmax = w.group("zmax", SurfaceKind::Boundary);
+  g.ymin = w.group("ymin", SurfaceKind::Boundary);
+  g.ymax = w.group("ymax", SurfaceKind::Boundary);
+  g.xmin = w.group("xmin", SurfaceKind::Boundary);
+  g.xmax = w.group("xmax", SurfaceKind::Boundary);
+  g.lower = w.group("lower", SurfaceKind::Horizon);
+  g.upper = w.group("upper", SurfaceKind::Horizon);
+  return g;
+}
+
+}  // namespace
+
 SurfaceSoup lattice_box(int n, bool horizon, const Vec3& lo, const Vec3& hi, unsigned shuffle_seed) {
   SurfaceSoup soup;
   soup.source = "lattice_box";
@@ -106,36 +152,21 @@ SurfaceSoup thin_layer_box(int n, double thickness) {
         }
         soup.points.push_back(p);
       }
-  auto add_group = [&](const std::string& name, SurfaceKind kind) {
-    soup.groups.push_back({name, name, kind, ""});
-    return static_cast<int>(soup.groups.size()) - 1;
-  };
-  // Quad (a, b, c, d), split along a–c, or b–d when `other`.
-  auto quad = [&](int g, int a, int b, int c, int d, bool other = false) {
-    const std::array<Triangle, 2> halves =
-        other ? std::array<Triangle, 2>{Triangle{a, b, d}, Triangle{b, c, d}} : std::array<Triangle, 2>{Triangle{a, b, c}, Triangle{a, c, d}};
-    for (const Triangle& t : halves) {
-      soup.triangles.push_back(t);
-      soup.triangle_group.push_back(g);
-    }
-  };
-  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
-  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
-  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
-  const int low = add_group("lower", SurfaceKind::Horizon), up = add_group("upper", SurfaceKind::Horizon);
+  SoupWriter w{soup};
+  const LayerBoxGroups g = layer_box_groups(w);
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
-      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
-      quad(zmax, id(a, b, top), id(a + 1, b, top), id(a + 1, b + 1, top), id(a, b + 1, top));
-      quad(low, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2));
-      quad(up, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level), id(a, b + 1, upper_level), true);
+      w.quad(g.zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
+      w.quad(g.zmax, id(a, b, top), id(a + 1, b, top), id(a + 1, b + 1, top), id(a, b + 1, top));
+      w.quad(g.lower, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2));
+      w.quad(g.upper, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level), id(a, b + 1, upper_level), true);
     }
   for (int a = 0; a < n; ++a)
     for (int k = 0; k < top; ++k) {
-      quad(ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
-      quad(ymax, id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1), id(a + 1, n, k));
-      quad(xmin, id(0, a, k), id(0, a, k + 1), id(0, a + 1, k + 1), id(0, a + 1, k));
-      quad(xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
+      w.quad(g.ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
+      w.quad(g.ymax, id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1), id(a + 1, n, k));
+      w.quad(g.xmin, id(0, a, k), id(0, a, k + 1), id(0, a + 1, k + 1), id(0, a + 1, k));
+      w.quad(g.xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
     }
   return soup;
 }
@@ -168,51 +199,30 @@ SurfaceSoup pinch_out_tongue_box(int n, double thickness, double tip, double ope
     soup.points.push_back(p);
     return slot;
   };
-  auto add_group = [&](const std::string& name, SurfaceKind kind) {
-    soup.groups.push_back({name, name, kind, ""});
-    return static_cast<int>(soup.groups.size()) - 1;
-  };
-  // Polygon (a, b, c, d) as two triangles, split along a–c or (`other`) b–d; a quad whose two
-  // left corners coincide (the pinch-out) is one triangle.
-  auto quad = [&](int g, int a, int b, int c, int d, bool other = false) {
-    std::vector<Triangle> halves;
-    if (a == d)
-      halves = {Triangle{a, b, c}};
-    else if (b == c)
-      halves = {Triangle{a, b, d}};
-    else
-      halves = other ? std::vector<Triangle>{{a, b, d}, {b, c, d}} : std::vector<Triangle>{{a, b, c}, {a, c, d}};
-    for (const Triangle& t : halves) {
-      soup.triangles.push_back(t);
-      soup.triangle_group.push_back(g);
-    }
-  };
-  const int zmin = add_group("zmin", SurfaceKind::Boundary), zmax = add_group("zmax", SurfaceKind::Boundary);
-  const int ymin = add_group("ymin", SurfaceKind::Boundary), ymax = add_group("ymax", SurfaceKind::Boundary);
-  const int xmin = add_group("xmin", SurfaceKind::Boundary), xmax = add_group("xmax", SurfaceKind::Boundary);
-  const int low = add_group("lower", SurfaceKind::Horizon), up = add_group("upper", SurfaceKind::Horizon);
+  SoupWriter w{soup};
+  const LayerBoxGroups g = layer_box_groups(w);
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
-      quad(zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
-      quad(zmax, id(a, b, 3), id(a + 1, b, 3), id(a + 1, b + 1, 3), id(a, b + 1, 3));
-      quad(low, id(a, b, 1), id(a + 1, b, 1), id(a + 1, b + 1, 1), id(a, b + 1, 1));
-      if (a >= i_tip) quad(up, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2), true);
+      w.quad(g.zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
+      w.quad(g.zmax, id(a, b, 3), id(a + 1, b, 3), id(a + 1, b + 1, 3), id(a, b + 1, 3));
+      w.quad(g.lower, id(a, b, 1), id(a + 1, b, 1), id(a + 1, b + 1, 1), id(a, b + 1, 1));
+      if (a >= i_tip) w.quad(g.upper, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2), true);
     }
   for (int a = 0; a < n; ++a)
     for (int k = 0; k < 3; ++k) {
       // The sides y = 0 and y = 1 over the levels of the lattice columns a and a + 1; the layer
       // band (levels 1 to 2) closes at the pinch-out.
       if (k == 1 && a + 1 <= i_tip) continue;
-      quad(ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
-      quad(ymax, id(a + 1, n, k), id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1));
+      w.quad(g.ymin, id(a, 0, k), id(a + 1, 0, k), id(a + 1, 0, k + 1), id(a, 0, k + 1));
+      w.quad(g.ymax, id(a + 1, n, k), id(a, n, k), id(a, n, k + 1), id(a + 1, n, k + 1));
     }
   for (int a = 0; a < n; ++a) {
     // x = 0 lies before the pinch-out: bottom to lower, lower to top.
-    quad(xmin, id(0, a, 0), id(0, a, 1), id(0, a + 1, 1), id(0, a + 1, 0));
-    quad(xmin, id(0, a, 1), id(0, a, 3), id(0, a + 1, 3), id(0, a + 1, 1));
+    w.quad(g.xmin, id(0, a, 0), id(0, a, 1), id(0, a + 1, 1), id(0, a + 1, 0));
+    w.quad(g.xmin, id(0, a, 1), id(0, a, 3), id(0, a + 1, 3), id(0, a + 1, 1));
   }
   for (int a = 0; a < n; ++a)
-    for (int k = 0; k < 3; ++k) quad(xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
+    for (int k = 0; k < 3; ++k) w.quad(g.xmax, id(n, a, k), id(n, a + 1, k), id(n, a + 1, k + 1), id(n, a, k + 1));
   return soup;
 }
 
