@@ -403,9 +403,9 @@ TEST(Tetrahedralize, ZippedPinchOutLeavesNoFlatTetsInTheTongue) {
   // A layer ending in a tongue 0.01 thick and 0.5 long, remeshed with cells of about 0.15: the
   // tets across the tongue are flat whatever TetGen does. Zipped (d_min 0.15 x the cell), the
   // tongue closes up to where the layer opens, and the volume mesh has no flat tet there. Where
-  // the tongue meets the box sides (y = 0, 1) the sides' contacts are already merged (d_min),
-  // and the zip, whose apexes must lie inside the two sides, stops a cell or two short of them:
-  // flat tets remain there.
+  // the tongue meets the box sides (y = 0, 1) its two sides end on the box along contacts 0.01
+  // apart, and the zip, whose apexes must lie inside the two sides, stops a cell or two short
+  // of them: flat tets remain there.
   const StructuralModel model = build_model(test::pinch_out_tongue_box(8, 0.01));
   ASSERT_EQ(model.regions.size(), 3u);
   Logger log = quiet_logger();
