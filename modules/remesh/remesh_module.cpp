@@ -103,7 +103,8 @@ class RemeshModule final : public Module {
                      "with --thin-layers: cells at most this many times smaller than elsewhere", 1.0, 100.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
-                     "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there"));
+                     "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there "
+                     "(experimental: where a zip stops short, next to a box side or a fault, tets can get worse)"));
     p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
                      "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
                      0.1, 90.0));
