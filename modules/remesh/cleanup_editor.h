@@ -190,6 +190,7 @@ class Editor {
   // Inside a transaction: the journal's length now, and undoing the edits made since (the
   // transaction stays open), for trying edits within a larger edit that may be undone whole.
   size_t mark() const { return journal_.size(); }
+  bool in_transaction() const { return open_; }
   void rollback_to(size_t mark);
   // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
   void move(int v, const Vec3& x, bool update_grid = true) {
@@ -389,33 +390,61 @@ class Editor {
 
 // Applies an edit as a transaction: `affected_before` gives the triangles whose violations the
 // edit may change (before it), `edit` performs it and returns the triangles affected after it
-// (or false to give up). The edit is kept when Editor::acceptable().
+// (or false to give up). The edit is kept when `acceptable(before, after)` (the violations
+// around it before and after).
 //
-// The edit is measured first: when it leaves no violation around it is kept at once (nothing
-// can be worse than none), which spares measuring most edits twice; otherwise it is undone, the
-// surroundings measured as they were, and the edit done again if it is acceptable. Edits are
-// deterministic, so doing one again gives the same result.
-template <class Edit>
-bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, Edit&& edit) {
+// The edit is measured first: when it leaves no violation around it and `clean_is_enough`, it
+// is kept at once (nothing can be worse than none), which spares measuring most edits twice;
+// otherwise it is undone, the surroundings measured as they were, and the edit done again if it
+// is acceptable. Edits are deterministic, so doing one again gives the same result. Inside an
+// open transaction (an edit made of such edits, undone whole if need be) the edit is undone to
+// where it started and the outer transaction stays open.
+template <class Accept, class Edit>
+bool transact_if(Editor& e, const std::vector<int>& affected_before, bool clean_is_enough, Accept&& acceptable,
+                 Edit&& edit) {
+  const bool nested = e.in_transaction();
+  const size_t mark = e.mark();
+  auto open = [&] {
+    if (!nested) e.begin();
+  };
+  auto undo = [&] {
+    if (nested)
+      e.rollback_to(mark);
+    else
+      e.rollback();
+  };
+  auto keep = [&] {
+    if (!nested) e.commit();
+  };
   std::vector<int> affected_after;
-  e.begin();
+  open();
   if (!edit(affected_after)) {
-    e.rollback();
+    undo();
     return false;
   }
   const Violations after = e.violations(affected_after);
-  if (after.total() == 0 && !strict) {
-    e.commit();
+  if (after.total() == 0 && clean_is_enough) {
+    keep();
     return true;
   }
-  e.rollback();
+  undo();
   const Violations before = e.violations(affected_before);
-  if (!Editor::acceptable(before, after, strict)) return false;
-  e.begin();
+  if (!acceptable(before, after)) return false;
+  open();
   affected_after.clear();
   edit(affected_after);
-  e.commit();
+  keep();
   return true;
+}
+
+// transact_if() with Editor::acceptable(): an edit that makes nothing worse (`strict`: that
+// repairs).
+template <class Edit>
+bool transact(Editor& e, const std::vector<int>& affected_before, bool strict, Edit&& edit) {
+  return transact_if(
+      e, affected_before, !strict,
+      [strict](const Violations& before, const Violations& after) { return Editor::acceptable(before, after, strict); },
+      std::forward<Edit>(edit));
 }
 
 

@@ -15,12 +15,10 @@ namespace {
 // them at a thin wedge, and of K, the part that runs on beyond the pinch-out between the regions
 // A (beyond P) and B (beyond Q).
 struct PinchFront {
-  int a = -1, b = -1;
   int tp = -1, tq = -1;  // the triangles of P and Q at the edge
   int c1 = -1, c2 = -1;  // their apexes
   int part_k = -1;
-  int region_a = -1;     // the region beyond P, on K's side where P's triangle faces
-  double thickness = 0.0;
+  bool p_faces_k_first = false;  // P's triangles, as oriented, face K's first region
 };
 
 double plane_distance(const Vec3& x, const Vec3& o, const Vec3& n) { return std::abs((x - o).dot(n)); }
@@ -45,26 +43,24 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     const int rb = r == rq.first ? rq.second : rq.first;
     if (r < -1 || ra == r || rb == r || ra == rb || (r != rq.first && r != rq.second)) return false;
     if (!((rk.first == ra && rk.second == rb) || (rk.first == rb && rk.second == ra))) return false;
-    z.a = a;
-    z.b = b;
     z.tp = lo.triangle;
     z.tq = hi.triangle;
     z.c1 = Editor::opposite(e.s_.triangles[z.tp], a, b);
     z.c2 = Editor::opposite(e.s_.triangles[z.tq], a, b);
     z.part_k = pk;
-    z.region_a = ra;
+    // P's triangles face A (ra) when it is P's first region, K's when it is K's.
+    z.p_faces_k_first = (rp.first == ra) == (rk.first == ra);
     for (int c : {z.c1, z.c2})
       if (e.s_.features[c].kind != VertexFeature::Surface || e.s_.features[c].pinned) return false;
     const Vec3 np = e.normal(z.tp).normalized(), nq = e.normal(z.tq).normalized();
-    z.thickness = std::max(plane_distance(e.p(z.c1), e.p(a), nq), plane_distance(e.p(z.c2), e.p(a), np));
-    return z.thickness < max_thickness;
+    return std::max(plane_distance(e.p(z.c1), e.p(a), nq), plane_distance(e.p(z.c2), e.p(a), np)) < max_thickness;
   }
   return false;
 }
 
 // The triangles of the parts of tp and tq around v that share their three vertices pairwise (the
 // two sides of the layer closed onto each other) become one triangle of K.
-void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int part_q, bool p_forward_faces_k_first) {
+void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int part_q) {
   std::vector<int> around(e.star(v));
   for (int t : around) {
     if (!e.alive(t) || e.s_.triangle_part[t] != part_p) continue;
@@ -76,7 +72,7 @@ void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int par
       e.kill(t);
       e.kill(u);
       // P's triangle faces region A; K's first region lies on its positive side.
-      e.add_triangle(p_forward_faces_k_first ? f : Triangle{f[0], f[2], f[1]}, z.part_k);
+      e.add_triangle(z.p_faces_k_first ? f : Triangle{f[0], f[2], f[1]}, z.part_k);
       break;
     }
   }
@@ -99,26 +95,12 @@ int side_contact_degree(Editor& e, int v, int part_p, int part_q) {
   return degree;
 }
 
-// transact() for a zip step, inside the transaction of the whole zip (see zip_pinch_outs()).
-// Until the zip reaches where the layer opens, the two sides meet at a thin wedge at the new
-// front edges too (folds, see Violations): a step may leave two more.
-template <class Edit>
-bool zip_step(Editor& e, const std::vector<int>& affected_before, Edit&& edit) {
-  std::vector<int> affected_after;
-  const size_t mark = e.mark();
-  if (!edit(affected_after)) {
-    e.rollback_to(mark);
-    return false;
-  }
-  const Violations after = e.violations(affected_after);
-  e.rollback_to(mark);
-  const Violations before = e.violations(affected_before);
-  if (after.holes > before.holes || after.leaks > before.leaks || after.crossings > before.crossings ||
-      after.degenerate > before.degenerate || after.pinches > before.pinches || after.folds > before.folds + 2)
-    return false;
-  affected_after.clear();
-  edit(affected_after);
-  return true;
+// The rule of a zip step: nothing worse around it, but for folds. Until the zip reaches where
+// the layer opens, the two sides meet at a thin wedge at the new front edges too (folds, see
+// Violations): a step may leave two more.
+bool zip_step_acceptable(const Violations& before, const Violations& after) {
+  return after.holes <= before.holes && after.leaks <= before.leaks && after.crossings <= before.crossings &&
+         after.degenerate <= before.degenerate && after.pinches <= before.pinches && after.folds <= before.folds + 2;
 }
 
 }  // namespace
@@ -153,10 +135,6 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
     if (!e.edge_exists(a, b) || !find_front(e, a, b, max_wedge, max_thickness, z)) continue;
     const int part_p = e.s_.triangle_part[z.tp], part_q = e.s_.triangle_part[z.tq];
     if (part_triangles[part_p] < 3 || part_triangles[part_q] < 3) continue;  // a side keeps triangles
-    const auto rp = e.part_regions_[part_p], rk = e.part_regions_[z.part_k];
-    // Whether P's triangles, as oriented, face K's first region.
-    const bool p_faces_a = rp.first == z.region_a;
-    const bool p_forward_faces_k_first = p_faces_a == (rk.first == z.region_a);
 
     // The two apexes in the plane of the edge: a at the origin, b on the x axis, both apexes
     // above it (the wedge is thin).
@@ -177,7 +155,9 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
     // Where an apex lies in the other side's triangle (a, b, c), as barycentric coordinates:
     // inside, or on a side edge (within a tenth), it is inserted there.
     constexpr double kMargin = 0.1;
-    auto insertable = [&](const Vec3& l) { return l.z() > kMargin && l.x() > -0.5 * kMargin && l.y() > -0.5 * kMargin; };
+    auto insertable = [&](const Vec3& l) {
+      return l.z() > kMargin && l.x() > -0.5 * kMargin && l.y() > -0.5 * kMargin;
+    };
     enum { Merge, InsertC2IntoP, InsertC1IntoQ, Cross } kind;
     int cross_p = -1, cross_q = -1;  // the edge ends on the base of the crossing edges
     double cross_s = 0.0, cross_r = 0.0;
@@ -224,7 +204,8 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
       for (int v : around) degree_before.push_back({v, side_contact_degree(e, v, part_p, part_q)});
     }
     int front = -1;  // the vertex where the two sides now meet beyond (a, b)
-    const bool done = zip_step(e, before, [&](std::vector<int>& after) {
+    // Each step is an edit inside the zip's own transaction (see below).
+    const bool done = transact_if(e, before, true, zip_step_acceptable, [&](std::vector<int>& after) {
       switch (kind) {
         case Merge: {
           const Vec3 mid = 0.5 * (e.p(z.c1) + e.p(z.c2));
@@ -265,7 +246,7 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
           break;
         }
       }
-      close_coincident(e, front, z, part_p, part_q, p_forward_faces_k_first);
+      close_coincident(e, front, z, part_p, part_q);
       // The contact of the two sides stays a line: closing two stretches of it at once (the
       // apexes were those of another front edge too) would shut the layer off beyond them.
       std::vector<int> ring;
@@ -300,7 +281,8 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
     }
   }
   const Editor::Census after_zip = e.census();
-  if (zipped > 0 && after_zip.count.total() - after_zip.count.folds > before_zip.count.total() - before_zip.count.folds) {
+  auto but_folds = [](const Editor::Census& c) { return c.count.total() - c.count.folds; };
+  if (zipped > 0 && but_folds(after_zip) > but_folds(before_zip)) {
     e.rollback();
     std::copy(features.begin(), features.end(), e.s_.features.begin());
     return 0;
