@@ -90,6 +90,11 @@ std::array<double, 6> dihedral_angles_deg(const Vec3& a, const Vec3& b, const Ve
   return angles;
 }
 
+double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const std::array<double, 6> angles = dihedral_angles_deg(a, b, c, d);
+  return *std::min_element(angles.begin(), angles.end());
+}
+
 double radius_edge_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 u = b - a, v = c - a, w = d - a;
   const double det = u.dot(v.cross(w));

@@ -47,6 +47,9 @@ double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 /// The six dihedral angles of a tet in degrees (edges 01, 02, 03, 12, 13, 23); 0 for a flat tet.
 std::array<double, 6> dihedral_angles_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+/// The smallest of them.
+double min_dihedral_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
 /// Circumradius over shortest edge; +inf for a flat tet.
 double radius_edge_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

@@ -46,11 +46,6 @@ int first_triangle(Editor& e, int a, int b) {
   return first;
 }
 
-double tet_min_dihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const auto angles = dihedral_angles_deg(a, b, c, d);
-  return *std::min_element(angles.begin(), angles.end());
-}
-
 // Smallest dihedral angle of the wedge tets with a vertex of the star of v, v at x (180 when
 // there is none).
 double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
@@ -65,7 +60,7 @@ double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
       if (!e.is_line_edge(a, b)) continue;
       thin_wedges(e, a, b, apexes);
       for (const auto& [c1, c2] : apexes)
-        worst = std::min(worst, tet_min_dihedral(e.p(a), e.p(b), e.p(c1), e.p(c2)));
+        worst = std::min(worst, min_dihedral_angle_deg(e.p(a), e.p(b), e.p(c1), e.p(c2)));
     }
   }
   e.s_.vertices[v] = old;
@@ -86,7 +81,7 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
       if (!e.is_line_edge(a, b) || first_triangle(e, a, b) != static_cast<int>(t)) continue;
       thin_wedges(e, a, b, apexes);
       for (const auto& [c1, c2] : apexes)
-        if (tet_min_dihedral(e.p(a), e.p(b), e.p(c1), e.p(c2)) < bound_deg) wanted.insert(wanted.end(), {a, b, c1, c2});
+        if (min_dihedral_angle_deg(e.p(a), e.p(b), e.p(c1), e.p(c2)) < bound_deg) wanted.insert(wanted.end(), {a, b, c1, c2});
     }
   }
   std::sort(wanted.begin(), wanted.end());

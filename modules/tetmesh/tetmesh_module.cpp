@@ -2,7 +2,6 @@
 // tet-meshes the current model with TetGen, keeping its surfaces (conformal tets), sets
 // context.volume and report["tetmesh"], and writes the mesh when an output is given.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,9 +34,8 @@ FlatTets find_nearly_flat_tets(const VolumeMesh& mesh) {
   FlatTets flat;
   for (size_t t = 0; t < mesh.tets.size(); ++t) {
     const Tetrahedron& k = mesh.tets[t];
-    const std::array<double, 6> angles =
-        dihedral_angles_deg(mesh.vertices[k[0]], mesh.vertices[k[1]], mesh.vertices[k[2]], mesh.vertices[k[3]]);
-    const double smallest = *std::min_element(angles.begin(), angles.end());
+    const double smallest =
+        min_dihedral_angle_deg(mesh.vertices[k[0]], mesh.vertices[k[1]], mesh.vertices[k[2]], mesh.vertices[k[3]]);
     if (smallest >= kFlatTetDeg) continue;
     ++flat.count;
     if (smallest < flat.worst_deg) flat.worst_deg = smallest, flat.worst = static_cast<long>(t);

@@ -379,8 +379,7 @@ ConvertedMesh to_volume_mesh(const StructuralModel& model, const PlcMap& map, co
 
 /// Smallest dihedral angle of each tet, in degrees.
 double min_dihedral(const VolumeMesh& mesh, const Tetrahedron& t) {
-  const auto angles = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
-  return *std::min_element(angles.begin(), angles.end());
+  return min_dihedral_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
 }
 
 double min_dihedral(const VolumeMesh& mesh) {

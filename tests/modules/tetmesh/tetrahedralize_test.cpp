@@ -393,8 +393,8 @@ double min_dihedral_between(const VolumeMesh& mesh, double y0, double y1) {
     const Vec3 c = 0.25 * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]] + mesh.vertices[t[3]]) +
                    mesh.frame.origin;
     if (c.y() <= y0 || c.y() >= y1) continue;
-    const auto angles = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
-    worst = std::min(worst, *std::min_element(angles.begin(), angles.end()));
+    worst = std::min(worst, min_dihedral_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                                                   mesh.vertices[t[3]]));
   }
   return worst;
 }
