@@ -28,7 +28,9 @@ struct Sample {
   Vec3 normal = Vec3::Zero();  // the part's area-weighted normal there
 };
 
-std::vector<Sample> thickness_samples(const StructuralModel& model, const ModelTriangles& flat) {
+// `cross`: (b − a) × (c − a) of every triangle (a, b, c).
+std::vector<Sample> thickness_samples(const StructuralModel& model, const ModelTriangles& flat,
+                                      const std::vector<Vec3>& cross) {
   std::vector<Sample> samples;
   for (size_t t = 0; t < flat.triangles.size(); ++t)
     for (int v : flat.triangles[t]) samples.push_back({flat.part[t], v, model.vertices[v], Vec3::Zero()});
@@ -37,21 +39,18 @@ std::vector<Sample> thickness_samples(const StructuralModel& model, const ModelT
   samples.erase(std::unique(samples.begin(), samples.end(),
                             [&](const Sample& a, const Sample& b) { return key(a) == key(b); }),
                 samples.end());
-  for (size_t t = 0; t < flat.triangles.size(); ++t) {
-    const Triangle& f = flat.triangles[t];
-    const Vec3 n = (model.vertices[f[1]] - model.vertices[f[0]]).cross(model.vertices[f[2]] - model.vertices[f[0]]);
-    for (int v : f) {
+  for (size_t t = 0; t < flat.triangles.size(); ++t)
+    for (int v : flat.triangles[t]) {
       const Sample probe{flat.part[t], v, Vec3::Zero(), Vec3::Zero()};
       auto it = std::lower_bound(samples.begin(), samples.end(), probe,
                                  [&](const Sample& a, const Sample& b) { return key(a) < key(b); });
-      it->normal += n;
+      it->normal += cross[t];
     }
-  }
   for (Sample& s : samples) s.normal.normalize();
   for (size_t t = 0; t < flat.triangles.size(); ++t) {
     const Triangle& f = flat.triangles[t];
     const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
-    samples.push_back({flat.part[t], -1, (a + b + c) / 3.0, (b - a).cross(c - a).normalized()});
+    samples.push_back({flat.part[t], -1, (a + b + c) / 3.0, cross[t].normalized()});
   }
   return samples;
 }
@@ -75,21 +74,22 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   result.size.assign(model.vertices.size(), h);
   const ModelTriangles flat = flatten(model);
   if (flat.triangles.empty()) return result;
-  const std::vector<Sample> samples = thickness_samples(model, flat);
+  const size_t nt = flat.triangles.size();
+  std::vector<Vec3> cross(nt), tri_normal(nt);
+  double mean_edge = 0.0;
+  for (size_t t = 0; t < nt; ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    cross[t] = (b - a).cross(c - a);
+    tri_normal[t] = cross[t].normalized();  // zero on a degenerate triangle: faces nothing
+    mean_edge += ((b - a).norm() + (c - b).norm() + (a - c).norm()) / (3.0 * static_cast<double>(nt));
+  }
+  const std::vector<Sample> samples = thickness_samples(model, flat, cross);
 
   // Triangles in a grid of their bounding boxes, cells about a triangle wide (input triangles
   // vary by orders of magnitude: a radius search around centroids would have to reach as far
   // as the largest one).
   const double t_max = h / options.ratio;
-  const size_t nt = flat.triangles.size();
-  std::vector<Vec3> tri_normal(nt);
-  double mean_edge = 0.0;
-  for (size_t t = 0; t < nt; ++t) {
-    const Triangle& f = flat.triangles[t];
-    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
-    tri_normal[t] = (b - a).cross(c - a).normalized();  // zero on a degenerate triangle: faces nothing
-    mean_edge += ((b - a).norm() + (c - b).norm() + (a - c).norm()) / (3.0 * static_cast<double>(nt));
-  }
   TriangleGrid grid;
   grid.reset(std::max(mean_edge, 2.0 * t_max));
   for (size_t t = 0; t < nt; ++t) {

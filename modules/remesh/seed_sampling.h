@@ -24,8 +24,8 @@ double edge_length_for_seeds(double area, int seeds);
 /// `count` seeds drawn at random on the model: a triangle with probability proportional to its
 /// area (to ∫√ρ over it with a density: the seed density of a 2D CVT), then a uniform point in
 /// it (for a density, rejection against the square root of its linear ρ). Reproducible from
-/// `random_seed` on any platform (mt19937_64 and explicit conversions). The result is sorted along a Morton curve (spatial locality for the
-/// clipping) and has no two equal points.
+/// `random_seed` on any platform (mt19937_64 and explicit conversions). The result is sorted
+/// along a Morton curve (spatial locality for the clipping) and has no two equal points.
 /// \throws ParameterError when count < 1.
 std::vector<Vec3> sample_seeds(const ModelGeometry& geometry, int count, std::uint64_t random_seed);
 

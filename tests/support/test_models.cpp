@@ -159,7 +159,8 @@ SurfaceSoup thin_layer_box(int n, double thickness) {
       w.quad(g.zmin, id(a, b, 0), id(a, b + 1, 0), id(a + 1, b + 1, 0), id(a + 1, b, 0));
       w.quad(g.zmax, id(a, b, top), id(a + 1, b, top), id(a + 1, b + 1, top), id(a, b + 1, top));
       w.quad(g.lower, id(a, b, 2), id(a + 1, b, 2), id(a + 1, b + 1, 2), id(a, b + 1, 2));
-      w.quad(g.upper, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level), id(a, b + 1, upper_level), true);
+      w.quad(g.upper, id(a, b, upper_level), id(a + 1, b, upper_level), id(a + 1, b + 1, upper_level),
+             id(a, b + 1, upper_level), true);
     }
   for (int a = 0; a < n; ++a)
     for (int k = 0; k < top; ++k) {
