@@ -228,11 +228,26 @@ int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int pas
 // Each step pairs the two apexes of the front edge: merged when close, else the nearer one
 // inserted into the other side's triangle, else the crossing of their edges inserted into
 // both, then the two coincident triangles become one of K (middle of the two sides, so the
-// surface moves by at most half the thickness). Zipped vertices are pinned. A step that would
-// close two stretches of the pinch-out at once (a pocket of the layer beyond) is refused, and
-// the whole zip is undone when it leaves more violations than before, folds aside (a front that
-// stops in a thin layer is one; the repair opens it). Returns the steps.
-int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg);
+// surface moves by at most half the thickness). An apex where the two sides already meet
+// (another stretch of their contact, or a side surface where they end together) stays put.
+// Zipped vertices are pinned. Where a tongue reaches a side surface (the box, a fault):
+//  - the layer's strip on it, when narrower than max_thickness, closes rung by rung;
+//  - a step that joins two stretches of the line where P and Q meet closes off a pocket of the
+//    layer: when the pocket is thinner than max_thickness all over it goes to the region beyond
+//    P (P's triangles there go, the others change part: Q's to K, the strip's to the side
+//    surface beyond P; the interface moves by the pocket's thickness at most); otherwise the
+//    step is refused;
+//  - front edges shorter than max_thickness (notches left by steps that crossed near an end)
+//    shrink to their midpoint.
+// The whole zip is undone when it leaves more violations than before, folds aside (a front
+// that stops in a thin layer is one; the repair opens it).
+struct PinchZips {
+  int steps = 0;    // front steps and notches closed
+  int rungs = 0;    // rungs of strips on side surfaces closed
+  int pockets = 0;  // pockets of a layer closed off by a step or a rung, gone to the region beyond
+  int edits() const { return steps + rungs; }
+};
+PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg);
 
 // ---- wedges (cleanup_wedges.cpp) ----
 

@@ -2,9 +2,12 @@
 // than d_min merge, applied to the two sides of a layer).
 #include "modules/remesh/cleanup_steps.h"
 
+#include "framework/geometry/closest_point.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <vector>
 
 namespace voroseal::cleanup {
@@ -18,10 +21,37 @@ struct PinchFront {
   int tp = -1, tq = -1;  // the triangles of P and Q at the edge
   int c1 = -1, c2 = -1;  // their apexes
   int part_k = -1;
+  int region = -1;  // R, the layer
   bool p_faces_k_first = false;  // P's triangles, as oriented, face K's first region
+  // An apex where P and Q already meet (on another stretch of their contact, or where they end
+  // together on a side surface): it stays where it is, the other apex comes to it (-1: none).
+  int anchor = -1;
 };
 
+// Edges of v with triangles of both parts: the contact where the two sides of the layer meet.
+int side_contact_degree(Editor& e, int v, int part_p, int part_q) {
+  std::vector<int> nb, tris;
+  e.neighbours(v, nb);
+  int degree = 0;
+  for (int w : nb) {
+    e.edge_triangles(v, w, tris);
+    bool p = false, q = false;
+    for (int t : tris) {
+      p = p || e.s_.triangle_part[t] == part_p;
+      q = q || e.s_.triangle_part[t] == part_q;
+    }
+    degree += p && q;
+  }
+  return degree;
+}
+
 double plane_distance(const Vec3& x, const Vec3& o, const Vec3& n) { return std::abs((x - o).dot(n)); }
+
+// Whether a part with these (two) regions lies between regions c and d; the region across it from c.
+bool joins(std::pair<int, int> regions, int c, int d) {
+  return (regions.first == c && regions.second == d) || (regions.first == d && regions.second == c);
+}
+int other_region(std::pair<int, int> regions, int c) { return regions.first == c ? regions.second : regions.first; }
 
 bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness, PinchFront& z) {
   std::vector<int> tris;
@@ -48,10 +78,15 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     z.c1 = Editor::opposite(e.s_.triangles[z.tp], a, b);
     z.c2 = Editor::opposite(e.s_.triangles[z.tq], a, b);
     z.part_k = pk;
+    z.region = r;
     // P's triangles face A (ra) when it is P's first region, K's when it is K's.
     z.p_faces_k_first = (rp.first == ra) == (rk.first == ra);
-    for (int c : {z.c1, z.c2})
-      if (e.s_.features[c].kind != VertexFeature::Surface || e.s_.features[c].pinned) return false;
+    z.anchor = -1;
+    for (int c : {z.c1, z.c2}) {
+      if (e.s_.features[c].kind == VertexFeature::Surface && !e.s_.features[c].pinned) continue;
+      if (z.anchor >= 0 || side_contact_degree(e, c, pp, pq) < 1) return false;
+      z.anchor = c;
+    }
     const Vec3 np = e.normal(z.tp).normalized(), nq = e.normal(z.tq).normalized();
     return std::max(plane_distance(e.p(z.c1), e.p(a), nq), plane_distance(e.p(z.c2), e.p(a), np)) < max_thickness;
   }
@@ -78,23 +113,6 @@ void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int par
   }
 }
 
-// Edges of v with triangles of both parts: the contact where the two sides of the layer meet.
-int side_contact_degree(Editor& e, int v, int part_p, int part_q) {
-  std::vector<int> nb, tris;
-  e.neighbours(v, nb);
-  int degree = 0;
-  for (int w : nb) {
-    e.edge_triangles(v, w, tris);
-    bool p = false, q = false;
-    for (int t : tris) {
-      p = p || e.s_.triangle_part[t] == part_p;
-      q = q || e.s_.triangle_part[t] == part_q;
-    }
-    degree += p && q;
-  }
-  return degree;
-}
-
 // The rule of a zip step: nothing worse around it, but for folds. Until the zip reaches where
 // the layer opens, the two sides meet at a thin wedge at the new front edges too (folds, see
 // Violations): a step may leave two more.
@@ -103,24 +121,319 @@ bool zip_step_acceptable(const Violations& before, const Violations& after) {
          after.degenerate <= before.degenerate && after.pinches <= before.pinches && after.folds <= before.folds + 2;
 }
 
+// The same, for a step that also closed a pocket: what the pocket's remaining triangles held
+// before (a needle, a fold), now measured around the step, does not count against it.
+bool pocket_step_acceptable(Violations before, const Violations& after, const Violations& in_pocket) {
+  before.degenerate += in_pocket.degenerate;
+  before.crossings += in_pocket.crossings;
+  before.folds += in_pocket.folds;
+  return zip_step_acceptable(before, after);
+}
+
+// The triangles bounding the volume of region r that triangle `seed` bounds, found by walking
+// from triangle to triangle around each edge on r's side (radial order); empty when more than
+// `limit` (not a pocket) or when the walk meets anything but a closed shell of r.
+std::vector<int> region_shell(Editor& e, int seed, int r, int limit) {
+  std::vector<int> shell{seed}, tris;
+  std::vector<FanBlade> fan;
+  auto faces_r_positive = [&](int t) {
+    const auto rr = e.part_regions_[e.s_.triangle_part[t]];
+    return rr.first == r;
+  };
+  for (size_t k = 0; k < shell.size(); ++k) {
+    const int t = shell[k];
+    const auto rr = e.part_regions_[e.s_.triangle_part[t]];
+    if ((rr.first == r) == (rr.second == r)) return {};  // r on both sides, or none
+    const Triangle f = e.s_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int a = f[i], b = f[(i + 1) % 3];
+      e.edge_triangles(a, b, tris);
+      if (!e.radial_order(a, b, tris, fan)) return {};
+      const int n = static_cast<int>(fan.size());
+      int at = -1;
+      for (int j = 0; j < n; ++j)
+        if (fan[j].triangle == t) at = j;
+      if (at < 0 || n < 2) return {};
+      // r lies toward increasing angles when t's positive side, facing r, faces them.
+      const bool up = fan[at].forward == faces_r_positive(t);
+      const FanBlade& next = fan[(at + (up ? 1 : n - 1)) % n];
+      // Its side toward t must face r too.
+      const auto rn = e.part_regions_[e.s_.triangle_part[next.triangle]];
+      const bool positive_toward_t = up ? !next.forward : next.forward;
+      if ((positive_toward_t ? rn.first : rn.second) != r) return {};
+      if (std::find(shell.begin(), shell.end(), next.triangle) != shell.end()) continue;
+      if (static_cast<int>(shell.size()) >= limit) return {};
+      shell.push_back(next.triangle);
+    }
+  }
+  std::sort(shell.begin(), shell.end());
+  return shell;
+}
+
+// A pocket of the layer at v: a small closed volume of region r (a zip step joined two stretches
+// of the line where the layer's sides meet, or reached a side where they already met), thinner
+// than max_thickness all over. It goes to the region beyond P (the side part_p of the pocket):
+// P's triangles there go, every other triangle of it turns to the part between that region and
+// the one beyond it (Q's to K, a side surface's strip to the surface beyond P). The interface
+// moves by the pocket's thickness at most. Returns false, nothing done, when there is none.
+bool absorb_pocket(Editor& e, int v, int part_p, int r, double max_thickness, std::vector<int>& changed,
+                   Violations& there) {
+  constexpr int kLimit = 400;  // triangles of a pocket
+  const int a = other_region(e.part_regions_[part_p], r);
+  std::vector<int> seeds;
+  for (int t : e.star(v))
+    if (e.s_.triangle_part[t] == part_p) seeds.push_back(t);
+  for (int seed : seeds) {
+    if (!e.alive(seed) || e.s_.triangle_part[seed] != part_p) continue;
+    const std::vector<int> shell = region_shell(e, seed, r, kLimit);
+    if (shell.empty()) continue;
+    // Thin: every vertex of P's triangles near the rest of the shell.
+    std::vector<int> gone, kept;
+    for (int t : shell) (e.s_.triangle_part[t] == part_p ? gone : kept).push_back(t);
+    if (kept.empty()) continue;
+    bool thin = true;
+    for (int t : gone)
+      for (int w : e.s_.triangles[t]) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int u : kept) {
+          const Triangle& g = e.s_.triangles[u];
+          best = std::min(best, squared_distance_to_triangle(e.p(w), e.p(g[0]), e.p(g[1]), e.p(g[2])));
+        }
+        thin = thin && best < max_thickness * max_thickness;
+      }
+    if (!thin) continue;
+    // The part every kept triangle turns to: between a and the region beyond it, one that the
+    // pocket touches (K at the front, the side surface's piece beyond P at its strip), so that
+    // no triangle goes to another surface between the same regions.
+    std::vector<int> touching;
+    for (int t : shell)
+      for (int w : e.s_.triangles[t])
+        for (int u : e.star(w))
+          if (!std::binary_search(shell.begin(), shell.end(), u)) touching.push_back(e.s_.triangle_part[u]);
+    std::sort(touching.begin(), touching.end());
+    touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+    std::vector<std::pair<int, int>> relabel;  // triangle, new part (-1: goes)
+    bool found_all = true;
+    for (int t : kept) {
+      const int beyond = other_region(e.part_regions_[e.s_.triangle_part[t]], r);
+      int part = -1;
+      if (beyond != a)
+        for (int q : touching)
+          if (joins(e.part_regions_[q], a, beyond)) part = q;
+      if (beyond != a && part < 0) {
+        found_all = false;
+        break;
+      }
+      relabel.push_back({t, part});
+    }
+    if (!found_all) continue;
+    there = e.violations(kept);
+    for (int t : gone) e.kill(t);
+    for (const auto& [t, part] : relabel) {
+      const Triangle f = e.s_.triangles[t];
+      const auto rt = e.part_regions_[e.s_.triangle_part[t]];
+      e.kill(t);
+      if (part < 0) continue;
+      // The side that faced r faces a now.
+      const bool r_positive = rt.first == r;
+      const bool a_first = e.part_regions_[part].first == a;
+      changed.push_back(e.add_triangle(r_positive == a_first ? f : Triangle{f[0], f[2], f[1]}, part));
+    }
+    return true;
+  }
+  return false;
+}
+
+// A front edge shorter than max_length (steps that crossed near an end leave them; the tets on
+// such a notch of the pinch-out are flat) shrinks to its midpoint. Its ends must be front
+// vertices (not corners); returns the vertex kept, or -1.
+int merge_short_front_edge(Editor& e, int a, int b, double max_length) {
+  if ((e.p(a) - e.p(b)).norm() >= max_length) return -1;
+  for (int v : {a, b})
+    if (e.s_.features[v].kind == VertexFeature::Corner || !e.s_.features[v].pinned) return -1;
+  std::vector<int> tris;
+  e.edge_triangles(a, b, tris);
+  if (tris.size() != 3) return -1;
+  // The edge is one of the line where a layer's sides P and Q meet and K runs on: P and Q share
+  // the layer's region, K lies between the regions beyond them.
+  bool front = false;
+  for (int k = 0; k < 3 && !front; ++k) {
+    const auto rp = e.part_regions_[e.s_.triangle_part[tris[(k + 1) % 3]]];
+    const auto rq = e.part_regions_[e.s_.triangle_part[tris[(k + 2) % 3]]];
+    for (int r : {rp.first, rp.second})
+      if (r >= 0 && (r == rq.first || r == rq.second) && other_region(rp, r) != other_region(rq, r))
+        front = front || joins(e.part_regions_[e.s_.triangle_part[tris[k]]], other_region(rp, r), other_region(rq, r));
+  }
+  if (!front) return -1;
+  std::vector<int> before;
+  e.stars({a, b}, before);
+  return transact_if(e, before, true, zip_step_acceptable, [&](std::vector<int>& after) {
+           const Vec3 mid = 0.5 * (e.p(a) + e.p(b));
+           collapse(e, a, b);
+           e.move(b, mid);
+           e.stars({b}, after);
+           return true;
+         })
+             ? b
+             : -1;
+}
+
+// A rung of the layer's strip on a side surface S (a fault, the box): the strip (part R | Z, R
+// the layer, Z beyond S) has a triangle (x, u, v) where x is a vertex at which the layer's two
+// sides P (R | A) and Q (R | B) already meet, u is on P's contact with S and v on Q's (S goes on
+// beyond them as its pieces A | Z and B | Z).
+struct StripRung {
+  int u = -1, v = -1;
+  int part_p = -1, part_q = -1;
+  int region = -1;       // R
+  PinchFront beyond;     // K (between A and B) and its orientation, for P's and Q's triangles
+                         // that the merge makes one; part_k -1 when no part is between A and B
+};
+
+// The rung at x, where the layer is thinner than max_thickness, its sides meet at a wedge under
+// max_wedge (radians) and the strip is narrower than max_thickness (each end that near the
+// other's contact: a wide strip, on a surface at a low angle to the layer, would move P's and
+// Q's borders along S by its width). False when none.
+bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRung& rung) {
+  std::vector<int> at_u, at_v, tris, nu, nv;
+  auto third = [&](const std::vector<int>& edge, int t0, int t1) {
+    for (int c : edge)
+      if (c != t0 && c != t1) return e.s_.triangle_part[c];
+    return -1;
+  };
+  auto off_line = [&](int w, int o) {
+    const Vec3 d = (e.p(o) - e.p(x)).normalized();
+    const Vec3 q = e.p(w) - e.p(x);
+    return (q - q.dot(d) * d).norm();
+  };
+  for (int t : std::vector<int>(e.star(x))) {
+    const int strip = e.s_.triangle_part[t];
+    const auto rs = e.part_regions_[strip];
+    int ends[2], n = 0;
+    for (int w : e.s_.triangles[t])
+      if (w != x) ends[n++] = w;
+    for (int flip = 0; flip < 2; ++flip) {
+      const int u = ends[flip], v = ends[1 - flip];
+      e.edge_triangles(x, u, at_u);
+      e.edge_triangles(x, v, at_v);
+      if (at_u.size() != 3 || at_v.size() != 3) continue;
+      for (int tp : at_u)
+        for (int tq : at_v) {
+          const int pp = e.s_.triangle_part[tp], pq = e.s_.triangle_part[tq];
+          if (tp == t || tq == t || pp == pq || pp == strip || pq == strip) continue;
+          const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq];
+          int r = -2;
+          for (int c : {rs.first, rs.second})
+            if (c >= 0 && (c == rp.first || c == rp.second) && (c == rq.first || c == rq.second)) r = c;
+          if (r < 0 || side_contact_degree(e, x, pp, pq) < 1) continue;
+          const int sa = third(at_u, t, tp), sb = third(at_v, t, tq);
+          const int zr = other_region(rs, r), ar = other_region(rp, r), br = other_region(rq, r);
+          if (sa < 0 || sb < 0 || zr == ar || zr == br || ar == br || !joins(e.part_regions_[sa], ar, zr) ||
+              !joins(e.part_regions_[sb], br, zr))
+            continue;
+          const Vec3 np = e.normal(tp).normalized(), nq = e.normal(tq).normalized();
+          if (!(plane_distance(e.p(u), e.p(x), nq) < max_thickness && plane_distance(e.p(v), e.p(x), np) < max_thickness))
+            continue;
+          if (std::acos(std::min(1.0, std::abs(np.dot(nq)))) >= max_wedge) continue;
+          if (std::max(off_line(u, v), off_line(v, u)) >= max_thickness) continue;
+          const VertexFeature fu = e.s_.features[u], fv = e.s_.features[v];
+          const bool u_free = fu.kind == VertexFeature::Contact && !fu.pinned;
+          const bool v_free = fv.kind == VertexFeature::Contact && !fv.pinned;
+          if (!u_free && !v_free) continue;
+          // Beyond the rung's apexes, u and v may share c, the next vertex of the line where P and
+          // Q meet: the merge makes P's and Q's triangles on c one, of K, a part between A and B
+          // around x or c.
+          e.edge_triangles(u, v, tris);
+          std::vector<int> apex, common, extra;
+          for (int s : tris) apex.push_back(Editor::opposite(e.s_.triangles[s], u, v));
+          std::sort(apex.begin(), apex.end());
+          apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
+          e.neighbours(u, nu);
+          e.neighbours(v, nv);
+          std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
+          std::set_difference(common.begin(), common.end(), apex.begin(), apex.end(), std::back_inserter(extra));
+          if (extra.size() > 1) continue;
+          PinchFront k;
+          k.region = r;
+          std::vector<int> near{x};
+          near.insert(near.end(), extra.begin(), extra.end());
+          for (int w : near)
+            for (int s : e.star(w))
+              if (k.part_k < 0 && joins(e.part_regions_[e.s_.triangle_part[s]], ar, br)) k.part_k = e.s_.triangle_part[s];
+          if (!extra.empty() && k.part_k < 0) continue;
+          if (k.part_k >= 0) k.p_faces_k_first = (rp.first == ar) == (e.part_regions_[k.part_k].first == ar);
+          // The free end goes; both free, they meet midway.
+          rung = StripRung{u_free ? u : v, u_free ? v : u, pp, pq, r, k};
+          return true;
+        }
+    }
+  }
+  return false;
+}
+
+// Closes the rung found at x (see find_rung): u and v merge (midway when both are free), P and
+// Q meet along S from x to the merged vertex, which is held there. A pocket of the layer that
+// the merge closes off goes too (absorb_pocket), else the merge is refused. Returns the merged
+// vertex, or -1; `pocket` tells whether a pocket went.
+int close_rung(Editor& e, int x, const StripRung& rung, double max_thickness, bool& pocket) {
+  const int from = rung.u, into = rung.v;
+  const bool both_free = e.s_.features[into].kind == VertexFeature::Contact && !e.s_.features[into].pinned;
+  std::vector<int> before;
+  e.stars({x, from, into}, before);
+  Violations in_pocket;
+  pocket = false;
+  auto acceptable = [&](const Violations& b, const Violations& a) { return pocket_step_acceptable(b, a, in_pocket); };
+  const bool done = transact_if(e, before, true, acceptable, [&](std::vector<int>& after) {
+    in_pocket = Violations{};
+    pocket = false;
+    const Vec3 mid = 0.5 * (e.p(from) + e.p(into));
+    collapse(e, from, into);
+    if (both_free) e.move(into, mid);
+    std::vector<int> around{x, into};
+    if (rung.beyond.part_k >= 0) close_coincident(e, into, rung.beyond, rung.part_p, rung.part_q);
+    if (side_contact_degree(e, into, rung.part_p, rung.part_q) > 2) {
+      std::vector<int> changed;
+      if (!absorb_pocket(e, into, rung.part_p, rung.region, max_thickness, changed, in_pocket)) return false;
+      pocket = true;
+      for (int c : changed)
+        for (int w : e.s_.triangles[c]) around.push_back(w);
+    }
+    e.stars(around, after);
+    return true;
+  });
+  if (!done) return -1;
+  e.s_.features[into].pinned = true;
+  return into;
+}
+
 }  // namespace
 
-int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
-  if (max_thickness <= 0.0 || max_wedge_deg <= 0.0) return 0;
+PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
+  PinchZips report;
+  if (max_thickness <= 0.0 || max_wedge_deg <= 0.0) return report;
   const double max_wedge = max_wedge_deg * M_PI / 180.0;
   std::vector<int> part_triangles(e.input_.parts.size(), 0);
+  auto count_triangles = [&] {
+    std::fill(part_triangles.begin(), part_triangles.end(), 0);
+    for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+      if (e.alive(static_cast<int>(t))) ++part_triangles[e.s_.triangle_part[t]];
+  };
+  count_triangles();
   std::deque<std::pair<int, int>> queue;
   for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
     const int t = static_cast<int>(ti);
     if (!e.alive(t)) continue;
-    ++part_triangles[e.s_.triangle_part[t]];
     const Triangle f = e.s_.triangles[t];
     for (int i = 0; i < 3; ++i)
       if (f[i] < f[(i + 1) % 3]) queue.push_back({f[i], f[(i + 1) % 3]});
   }
   std::sort(queue.begin(), queue.end());
   queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
-  int zipped = 0;
+  std::vector<int> nb;
+  auto push_edges = [&](int v) {
+    e.neighbours(v, nb);
+    for (int w : nb) queue.push_back({std::min(v, w), std::max(v, w)});
+  };
   // The zip is one edit, kept only when it leaves the surfaces no less valid than they were,
   // but for folds: a front that stops short of where the layer opens leaves one there, which
   // the repair (after the zip) opens.
@@ -131,8 +444,32 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
   while (!queue.empty()) {
     const auto [a, b] = queue.front();
     queue.pop_front();
+    if (!e.edge_exists(a, b)) continue;
+    // Where a front has reached a side surface, the layer's strip on it closes rung by rung.
+    bool rungs = false;
+    for (int x : {a, b}) {
+      StripRung rung;
+      if (!find_rung(e, x, max_wedge, max_thickness, rung)) continue;
+      bool pocket = false;
+      const int merged = close_rung(e, x, rung, max_thickness, pocket);
+      if (merged < 0) continue;
+      rungs = true;
+      ++report.rungs;
+      report.pockets += pocket;
+      for (int v : {x, merged}) push_edges(v);
+    }
+    if (rungs) {
+      count_triangles();
+      if (!e.edge_exists(a, b)) continue;
+    }
+    // A notch of the pinch-out closes.
+    if (const int kept = merge_short_front_edge(e, a, b, max_thickness); kept >= 0) {
+      ++report.steps;
+      push_edges(kept);
+      continue;
+    }
     PinchFront z;
-    if (!e.edge_exists(a, b) || !find_front(e, a, b, max_wedge, max_thickness, z)) continue;
+    if (!find_front(e, a, b, max_wedge, max_thickness, z)) continue;
     const int part_p = e.s_.triangle_part[z.tp], part_q = e.s_.triangle_part[z.tq];
     if (part_triangles[part_p] < 3 || part_triangles[part_q] < 3) continue;  // a side keeps triangles
 
@@ -204,12 +541,23 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
       for (int v : around) degree_before.push_back({v, side_contact_degree(e, v, part_p, part_q)});
     }
     int front = -1;  // the vertex where the two sides now meet beyond (a, b)
+    bool absorbed = false;  // the step closed a pocket too
+    Violations in_pocket;  // what the pocket the step closes held before (see absorb_pocket)
+    auto acceptable = [&](const Violations& b, const Violations& a) { return pocket_step_acceptable(b, a, in_pocket); };
     // Each step is an edit inside the zip's own transaction (see below).
-    const bool done = transact_if(e, before, true, zip_step_acceptable, [&](std::vector<int>& after) {
+    const bool done = transact_if(e, before, true, acceptable, [&](std::vector<int>& after) {
+      in_pocket = Violations{};
+      absorbed = false;
       switch (kind) {
         case Merge: {
           const Vec3 mid = 0.5 * (e.p(z.c1) + e.p(z.c2));
           if (e.edge_exists(z.c1, z.c2)) return false;
+          if (z.anchor >= 0) {
+            const int free = z.anchor == z.c1 ? z.c2 : z.c1;
+            collapse(e, free, z.anchor);
+            front = z.anchor;
+            break;
+          }
           collapse(e, z.c1, z.c2);
           e.move(z.c2, mid);
           front = z.c2;
@@ -232,7 +580,7 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
             e.kill(t);
             for (int i = 0; i < 3; ++i) e.add_triangle({f[i], f[(i + 1) % 3], apex}, part);
           }
-          e.move(apex, 0.5 * (e.p(apex) + foot));
+          if (apex != z.anchor) e.move(apex, 0.5 * (e.p(apex) + foot));
           front = apex;
           break;
         }
@@ -252,11 +600,25 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
       std::vector<int> ring;
       e.neighbours(front, ring);
       ring.push_back(front);
-      for (int v : ring) {
-        const int d = side_contact_degree(e, v, part_p, part_q);
-        if (d <= 2) continue;
-        const auto it = std::lower_bound(degree_before.begin(), degree_before.end(), std::make_pair(v, 0));
-        if (it == degree_before.end() || it->first != v || d > it->second) return false;
+      auto branches = [&] {
+        for (int v : ring) {
+          const int d = side_contact_degree(e, v, part_p, part_q);
+          if (d <= 2) continue;
+          const auto it = std::lower_bound(degree_before.begin(), degree_before.end(), std::make_pair(v, 0));
+          if (it == degree_before.end() || it->first != v || d > it->second) return true;
+        }
+        return false;
+      };
+      if (branches()) {
+        // The step closed a pocket off: it goes too when thin all over; else the step is refused.
+        std::vector<int> changed;
+        if (!absorb_pocket(e, front, part_p, z.region, max_thickness, changed, in_pocket) || branches()) return false;
+        absorbed = true;
+        std::vector<int> around{a, b, z.c1, z.c2, front};
+        for (int t : changed)
+          for (int w : e.s_.triangles[t]) around.push_back(w);
+        e.stars(around, after);
+        return true;
       }
       e.stars({a, b, z.c1, z.c2, front}, after);
       return true;
@@ -264,31 +626,35 @@ int zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) {
     if (!done) continue;
     // The sides meet along (a, front) and (b, front) now, held where they closed: no later move
     // projects them back onto the input contact, which no longer runs there.
-    VertexFeature held = e.s_.features[a].kind == VertexFeature::Contact ? e.s_.features[a] : e.s_.features[b];
-    if (held.kind != VertexFeature::Contact) held = {VertexFeature::Surface, z.part_k};
-    held.pinned = true;
-    e.s_.features[front] = held;
+    if (front == z.anchor) {
+      if (e.s_.features[front].kind != VertexFeature::Corner) e.s_.features[front].pinned = true;
+    } else {
+      VertexFeature held = e.s_.features[a].kind == VertexFeature::Contact ? e.s_.features[a] : e.s_.features[b];
+      if (held.kind != VertexFeature::Contact) held = {VertexFeature::Surface, z.part_k};
+      held.pinned = true;
+      e.s_.features[front] = held;
+    }
     for (int v : {a, b})
       if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
     // A merge closes a triangle of each side; an insertion splits the triangle it lands in.
     part_triangles[part_p] += kind == Merge || kind == InsertC1IntoQ ? -1 : 1;
     part_triangles[part_q] += kind == Merge || kind == InsertC2IntoP ? -1 : 1;
-    ++zipped;
-    for (int v : {a, b, front}) {
-      std::vector<int> nb;
-      e.neighbours(v, nb);
-      for (int w : nb) queue.push_back({std::min(v, w), std::max(v, w)});
+    if (absorbed) {
+      ++report.pockets;
+      count_triangles();
     }
+    ++report.steps;
+    for (int v : {a, b, front}) push_edges(v);
   }
   const Editor::Census after_zip = e.census();
   auto but_folds = [](const Editor::Census& c) { return c.count.total() - c.count.folds; };
-  if (zipped > 0 && but_folds(after_zip) > but_folds(before_zip)) {
+  if (report.edits() > 0 && but_folds(after_zip) > but_folds(before_zip)) {
     e.rollback();
     std::copy(features.begin(), features.end(), e.s_.features.begin());
-    return 0;
+    return PinchZips{};
   }
   e.commit();
-  return zipped;
+  return report;
 }
 
 }  // namespace voroseal::cleanup

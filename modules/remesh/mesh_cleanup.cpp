@@ -82,8 +82,11 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
   report.sharp_moves +=
       reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
   if (options.zip_wedge_deg > 0.0) {
-    report.pinch_zips = zip_pinch_outs(e, options.min_feature, options.zip_wedge_deg);
-    if (report.pinch_zips > 0) report.flips += flip_edges(e, options.flip_flatness_deg);
+    const PinchZips zips = zip_pinch_outs(e, options.min_feature, options.zip_wedge_deg);
+    report.pinch_zips = zips.steps;
+    report.pinch_rungs = zips.rungs;
+    report.pinch_pockets = zips.pockets;
+    if (zips.edits() > 0) report.flips += flip_edges(e, options.flip_flatness_deg);
   }
   for (int i = 0; options.wedge_dihedral_deg > 0.0 && i < 8; ++i) {
     const int moved = open_wedge_tets(e, projector, options.wedge_dihedral_deg);

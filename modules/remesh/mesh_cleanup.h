@@ -68,6 +68,8 @@ struct CleanupReport {
   int wedge_moves = 0;        // vertices moved to open the flat tets of thin wedges
   int tips_joined = 0;        // free border vertices joined to the part they nearly touch
   int pinch_zips = 0;         // steps closing layers thinner than min_feature past a pinch-out
+  int pinch_rungs = 0;        // rungs of such a layer's strips on side surfaces closed
+  int pinch_pockets = 0;      // pockets of such a layer closed off by the zip, gone to a neighbour
   int flips = 0;
   int smoothing_passes = 0;
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed

@@ -104,7 +104,7 @@ class RemeshModule final : public Module {
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
                      "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there "
-                     "(experimental: where a zip stops short, next to a box side or a fault, tets can get worse)"));
+                     "(experimental: check the tet mesh; where a zip stops short, tets can get worse)"));
     p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
                      "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
                      0.1, 90.0));
@@ -202,6 +202,8 @@ class RemeshModule final : public Module {
                          {"wedge_moves", result.cleanup.wedge_moves},
                          {"tips_joined", result.cleanup.tips_joined},
                          {"pinch_zips", result.cleanup.pinch_zips},
+                         {"pinch_rungs", result.cleanup.pinch_rungs},
+                         {"pinch_pockets", result.cleanup.pinch_pockets},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},

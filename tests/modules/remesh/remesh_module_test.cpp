@@ -152,8 +152,12 @@ TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
   };
   const nlohmann::json plain = run(nlohmann::json::object());
   EXPECT_EQ(plain.at("cleanup").at("pinch_zips").get<int>(), 0);
+  EXPECT_EQ(plain.at("cleanup").at("pinch_pockets").get<int>(), 0);
   const nlohmann::json zipped = run({{"zip-pinch-outs", true}});
   EXPECT_GT(zipped.at("cleanup").at("pinch_zips").get<int>(), 10);
+  // Where the tongue meets the box sides: rungs of its strips closed (2) and pockets gone (2).
+  EXPECT_GT(zipped.at("cleanup").at("pinch_rungs").get<int>(), 0);
+  EXPECT_GT(zipped.at("cleanup").at("pinch_pockets").get<int>(), 0);
   EXPECT_TRUE(zipped.at("topology").at("regions_preserved").get<bool>());
   EXPECT_TRUE(zipped.at("valid").get<bool>());
   EXPECT_EQ(run({{"zip-pinch-outs", true}, {"zip-wedge", 0.5}}).at("cleanup").at("pinch_zips").get<int>(), 0);
