@@ -239,6 +239,8 @@ int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int pas
 //    step is refused;
 //  - front edges shorter than max_thickness (notches left by steps that crossed near an end)
 //    shrink to their midpoint.
+// A front whose sides already lie on each other (P's and Q's triangles on the same vertices,
+// left by an earlier merge) closes into one triangle of K.
 // The whole zip is undone when it leaves more violations than before, folds aside (a front
 // that stops in a thin layer is one; the repair opens it).
 struct PinchZips {

@@ -58,6 +58,24 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
   e.edge_triangles(a, b, tris);
   std::vector<FanBlade> fan;
   if (tris.size() != 3 || !e.radial_order(a, b, tris, fan)) return false;
+  // Two of the triangles on the same three vertices: the sides already closed onto each other
+  // there (a merge before the zip), a front of no wedge whose radial order is arbitrary.
+  for (int i = 0; i < 3; ++i) {
+    const int ti = tris[i], tj = tris[(i + 1) % 3], tk = tris[(i + 2) % 3];
+    const int apex = Editor::opposite(e.s_.triangles[ti], a, b);
+    if (apex != Editor::opposite(e.s_.triangles[tj], a, b)) continue;
+    const int pp = e.s_.triangle_part[ti], pq = e.s_.triangle_part[tj], pk = e.s_.triangle_part[tk];
+    if (pp == pq || pp == pk || pq == pk) return false;
+    const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
+    for (int r : {rp.first, rp.second}) {
+      if (r < -1 || (r != rq.first && r != rq.second)) continue;
+      const int ra = other_region(rp, r), rb = other_region(rq, r);
+      if (ra == r || rb == r || ra == rb || !joins(rk, ra, rb)) continue;
+      z = PinchFront{ti, tj, apex, apex, pk, r, (rp.first == ra) == (rk.first == ra), -1};
+      return true;
+    }
+    return false;
+  }
   for (int i = 0; i < 3; ++i) {
     if (wedge_after(fan, i) >= max_wedge) continue;
     const FanBlade& lo = fan[i];
@@ -473,6 +491,24 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     const int part_p = e.s_.triangle_part[z.tp], part_q = e.s_.triangle_part[z.tq];
     if (part_triangles[part_p] < 3 || part_triangles[part_q] < 3) continue;  // a side keeps triangles
 
+    if (z.c1 == z.c2) {
+      // Coincident: the two triangles become one of K, nothing moves.
+      std::vector<int> before;
+      e.stars({a, b, z.c1}, before);
+      const bool done = transact_if(e, before, true, zip_step_acceptable, [&](std::vector<int>& after) {
+        close_coincident(e, z.c1, z, part_p, part_q);
+        e.stars({a, b, z.c1}, after);
+        return true;
+      });
+      if (!done) continue;
+      for (int v : {a, b, z.c1})
+        if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
+      --part_triangles[part_p];
+      --part_triangles[part_q];
+      ++report.steps;
+      for (int v : {a, b, z.c1}) push_edges(v);
+      continue;
+    }
     // The two apexes in the plane of the edge: a at the origin, b on the x axis, both apexes
     // above it (the wedge is thin).
     const Vec3 o = e.p(a);
