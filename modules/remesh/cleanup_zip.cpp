@@ -350,8 +350,8 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
               !joins(e.part_regions_[sb], br, zr))
             continue;
           const Vec3 np = e.normal(tp).normalized(), nq = e.normal(tq).normalized();
-          if (!(plane_distance(e.p(u), e.p(x), nq) < max_thickness && plane_distance(e.p(v), e.p(x), np) < max_thickness))
-            continue;
+          const double thickness = std::max(plane_distance(e.p(u), e.p(x), nq), plane_distance(e.p(v), e.p(x), np));
+          if (thickness >= max_thickness) continue;
           if (std::acos(std::min(1.0, std::abs(np.dot(nq)))) >= max_wedge) continue;
           if (std::max(off_line(u, v), off_line(v, u)) >= max_thickness) continue;
           const VertexFeature fu = e.s_.features[u], fv = e.s_.features[v];
@@ -376,8 +376,10 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
           std::vector<int> near{x};
           near.insert(near.end(), extra.begin(), extra.end());
           for (int w : near)
-            for (int s : e.star(w))
-              if (k.part_k < 0 && joins(e.part_regions_[e.s_.triangle_part[s]], ar, br)) k.part_k = e.s_.triangle_part[s];
+            for (int s : e.star(w)) {
+              const int part = e.s_.triangle_part[s];
+              if (k.part_k < 0 && joins(e.part_regions_[part], ar, br)) k.part_k = part;
+            }
           if (!extra.empty() && k.part_k < 0) continue;
           if (k.part_k >= 0) k.p_faces_k_first = (rp.first == ar) == (e.part_regions_[k.part_k].first == ar);
           // The free end goes; both free, they meet midway.
