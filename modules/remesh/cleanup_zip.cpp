@@ -87,10 +87,9 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
     // The region inside the wedge, on the side of lo facing increasing angles.
     const int r = lo.forward ? rp.first : rp.second;
-    const int ra = r == rp.first ? rp.second : rp.first;
-    const int rb = r == rq.first ? rq.second : rq.first;
+    const int ra = other_region(rp, r), rb = other_region(rq, r);
     if (r < -1 || ra == r || rb == r || ra == rb || (r != rq.first && r != rq.second)) return false;
-    if (!((rk.first == ra && rk.second == rb) || (rk.first == rb && rk.second == ra))) return false;
+    if (!joins(rk, ra, rb)) return false;
     z.tp = lo.triangle;
     z.tq = hi.triangle;
     z.c1 = Editor::opposite(e.s_.triangles[z.tp], a, b);
@@ -109,6 +108,12 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     return std::max(plane_distance(e.p(z.c1), e.p(a), nq), plane_distance(e.p(z.c2), e.p(a), np)) < max_thickness;
   }
   return false;
+}
+
+// A vertex the zip closed at stays there (a corner is held anyway): no later move projects it
+// back onto the input contact, which no longer runs there.
+void hold(Editor& e, int v) {
+  if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
 }
 
 // The triangles of the parts of tp and tq around v that share their three vertices pairwise (the
@@ -402,7 +407,9 @@ int close_rung(Editor& e, int x, const StripRung& rung, double max_thickness, bo
   e.stars({x, from, into}, before);
   Violations in_pocket;
   pocket = false;
-  auto acceptable = [&](const Violations& b, const Violations& a) { return pocket_step_acceptable(b, a, in_pocket); };
+  auto acceptable = [&](const Violations& was, const Violations& is) {
+    return pocket_step_acceptable(was, is, in_pocket);
+  };
   const bool done = transact_if(e, before, true, acceptable, [&](std::vector<int>& after) {
     in_pocket = Violations{};
     pocket = false;
@@ -503,8 +510,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
         return true;
       });
       if (!done) continue;
-      for (int v : {a, b, z.c1})
-        if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
+      for (int v : {a, b, z.c1}) hold(e, v);
       --part_triangles[part_p];
       --part_triangles[part_q];
       ++report.steps;
@@ -581,7 +587,9 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     int front = -1;  // the vertex where the two sides now meet beyond (a, b)
     bool absorbed = false;  // the step closed a pocket too
     Violations in_pocket;  // what the pocket the step closes held before (see absorb_pocket)
-    auto acceptable = [&](const Violations& b, const Violations& a) { return pocket_step_acceptable(b, a, in_pocket); };
+    auto acceptable = [&](const Violations& was, const Violations& is) {
+    return pocket_step_acceptable(was, is, in_pocket);
+  };
     // Each step is an edit inside the zip's own transaction (see below).
     const bool done = transact_if(e, before, true, acceptable, [&](std::vector<int>& after) {
       in_pocket = Violations{};
@@ -665,15 +673,14 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     // The sides meet along (a, front) and (b, front) now, held where they closed: no later move
     // projects them back onto the input contact, which no longer runs there.
     if (front == z.anchor) {
-      if (e.s_.features[front].kind != VertexFeature::Corner) e.s_.features[front].pinned = true;
+      hold(e, front);
     } else {
       VertexFeature held = e.s_.features[a].kind == VertexFeature::Contact ? e.s_.features[a] : e.s_.features[b];
       if (held.kind != VertexFeature::Contact) held = {VertexFeature::Surface, z.part_k};
       held.pinned = true;
       e.s_.features[front] = held;
     }
-    for (int v : {a, b})
-      if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
+    for (int v : {a, b}) hold(e, v);
     // A merge closes a triangle of each side; an insertion splits the triangle it lands in.
     part_triangles[part_p] += kind == Merge || kind == InsertC1IntoQ ? -1 : 1;
     part_triangles[part_q] += kind == Merge || kind == InsertC2IntoP ? -1 : 1;
