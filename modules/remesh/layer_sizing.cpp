@@ -68,7 +68,8 @@ void grade_from(const PointKdTree& vertices, const Vec3& x, double s, double h, 
 LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const LayerSizingOptions& options) {
   if (!(h > 0.0) || !std::isfinite(h)) throw ParameterError("remesh: the layer sizing needs a positive edge length");
   if (!(options.ratio > 0.0) || !(options.max_refinement >= 1.0) || !(options.gradation > 0.0) ||
-      !(options.facing_angle_deg >= 0.0 && options.facing_angle_deg < 90.0) || !(options.pinch_angle_deg >= 0.0))
+      !(options.facing_angle_deg >= 0.0 && options.facing_angle_deg < 90.0) || !(options.pinch_angle_deg >= 0.0) ||
+      !(options.corner_ratio >= 0.0 && std::isfinite(options.corner_ratio)))
     throw ParameterError("remesh: layer sizing options out of range");
   LayerSizing result;
   result.size.assign(model.vertices.size(), h);
@@ -139,6 +140,19 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
     const double s = std::clamp(options.ratio * thickness[i], min_size, h);
     grade_from(vertex_tree, samples[i].position, s, h, options.gradation, result.size, found);
   }
+  // Contacts between two corners shorter than h (but not than the finest cells: those merge
+  // whatever the size), refined after the tips' rule below.
+  std::vector<std::pair<int, double>> short_contacts;  // contact, size along it
+  for (size_t c = 0; c < model.contacts.size() && options.corner_ratio > 0.0; ++c) {
+    const Contact& contact = model.contacts[c];
+    if (contact.vertices.size() < 2 || contact.vertices.front() == contact.vertices.back()) continue;
+    double length = 0.0;
+    for (size_t i = 1; i < contact.vertices.size(); ++i)
+      length += (model.vertices[contact.vertices[i]] - model.vertices[contact.vertices[i - 1]]).norm();
+    if (!(length < h) || length < min_size) continue;
+    short_contacts.emplace_back(static_cast<int>(c), std::clamp(options.corner_ratio * length, min_size, h));
+  }
+  result.short_contacts = static_cast<int>(short_contacts.size());
   if (!result.refines()) return result;
 
   // Thin contact wedges keep the size h, falling off at the gradation rate.
@@ -154,6 +168,16 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
       result.size[item.first] = std::max(result.size[item.first], h - options.gradation * std::sqrt(item.second));
   }
   result.pinch_vertices = static_cast<int>(tips.size());
+
+  // Corners closer than a cell: two corners joined by a contact shorter than the cells fall in
+  // one restricted Voronoi cell and the mesh building merges them (Algorithm 3), moving the
+  // surfaces' contact lines there by up to the contact's length; a horizon whose corner slid
+  // up a box edge then runs down the box side a few metres from it (modelA6 at 5000 seeds: two
+  // horizons' corners 215 m apart on a box edge, 1.0 deg tets). Cells as long as the contact
+  // keep its corners apart.
+  for (const auto& [c, s] : short_contacts)
+    for (int v : model.contacts[c].vertices)
+      grade_from(vertex_tree, model.vertices[v], s, h, options.gradation, result.size, found);
 
   // The thinnest layer away from the tips (at a tip every layer is as thin as one likes).
   const PointCloud tip_cloud{tips.data(), tips.size()};

@@ -14,6 +14,11 @@
 // modelA6 at 8000 seeds: 3.5 deg with it, 1.9 deg without, 0.0 deg without and cells down to
 // h / 8, all at pinch-outs).
 //
+// A contact between two corners shorter than h (a layer's stretch of a box edge) gets cells
+// corner_ratio times its length along it, graded the same way, unless it is shorter than
+// h / max_refinement: with cells of h its corners share a cell and the mesh building merges
+// them (see layer_sizing.cpp).
+//
 // The size becomes the CVT density rho = (h / size)^4 at the model vertices: the cells of a 2D
 // CVT have a diameter proportional to rho^(-1/4) (Du, Faber, Gunzburger 1999).
 #pragma once
@@ -31,6 +36,7 @@ struct LayerSizingOptions {
   double gradation = 0.4;        // size change per unit length
   double facing_angle_deg = 30.0;  // a surface faces a vertex within this angle of its normal
   double pinch_angle_deg = 30.0;   // contact wedges thinner than this keep the size h
+  double corner_ratio = 1.0;       // size at most corner_ratio × the length of a contact shorter than h
 };
 
 struct LayerSizing {
@@ -38,11 +44,12 @@ struct LayerSizing {
   /// Thickness samples (part vertices, triangle centroids) on a layer thinner than h / ratio.
   int thin_samples = 0;
   int pinch_vertices = 0;    // contact vertices at a wedge thinner than pinch_angle_deg
+  int short_contacts = 0;    // contacts between two corners shorter than h, refined
   /// The thinnest layer farther than h from every pinch-out tip (+inf: none), and where (local
   /// frame).
   double thinnest = std::numeric_limits<double>::infinity();
   Vec3 thinnest_at = Vec3::Zero();
-  bool refines() const { return thin_samples > 0; }
+  bool refines() const { return thin_samples > 0 || short_contacts > 0; }
 };
 
 /// Target edge lengths for a remesh of mean edge length h.

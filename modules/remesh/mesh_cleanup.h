@@ -70,6 +70,9 @@ struct CleanupReport {
   int pinch_zips = 0;         // steps closing layers thinner than min_feature past a pinch-out
   int pinch_rungs = 0;        // rungs of such a layer's strips on side surfaces closed
   int pinch_pockets = 0;      // pockets of such a layer closed off by the zip, gone to a neighbour
+  /// The zip's edits made the clean-up leave the surfaces less valid than a clean-up without it
+  /// (see remesh()): they were undone, the counts above are those of the zip that was undone.
+  bool pinch_zip_undone = false;
   int flips = 0;
   int smoothing_passes = 0;
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed
@@ -82,6 +85,8 @@ struct CleanupReport {
   int folds_left = 0;           // wedges of a few degrees at contact edges (a triangle on another part)
   int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature
+  /// What makes the output an invalid model (folds only warn).
+  int invalid_left() const { return intersections_left + holes_left + leaks_left + degenerate_left + pinches_left; }
 };
 
 /// Cleans `surface` in place. Corners never move; contact vertices move along their contact;

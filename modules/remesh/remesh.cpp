@@ -190,7 +190,34 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
                 " restricted Voronoi vertices could not be matched between cells");
 
   t0 = std::chrono::steady_clock::now();
-  if (options.clean_up) result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
+  if (options.clean_up) {
+    // The zip (experimental) works inside surfaces the clean-up has not finished repairing, and
+    // the last repair can then fail where it succeeds without it (modelA6 with --thin-layers: the
+    // zip closed a coincident pair of triangles next to a leak the mesh building had left, and
+    // the leak stayed). A clean-up that left the surfaces invalid runs again without the zip,
+    // and the more valid result stays.
+    const bool zips = cleanup.zip_wedge_deg > 0.0;
+    RemeshedSurface built = zips ? result.build.surface : RemeshedSurface{};
+    result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
+    const int zipped_edits = result.cleanup.pinch_zips + result.cleanup.pinch_rungs + result.cleanup.pinch_pockets;
+    if (zips && zipped_edits > 0 && result.cleanup.invalid_left() > 0) {
+      CleanupOptions plain = cleanup;
+      plain.zip_wedge_deg = 0.0;
+      CleanupReport without = clean_up(built, input, projector, plain);
+      if (without.invalid_left() < result.cleanup.invalid_left()) {
+        log.warning("remesh: the pinch-out zip left the surfaces invalid (" +
+                    std::to_string(result.cleanup.invalid_left()) + " defects, " +
+                    std::to_string(without.invalid_left()) + " without it): its " + std::to_string(zipped_edits) +
+                    " edits were undone");
+        without.pinch_zips = result.cleanup.pinch_zips;
+        without.pinch_rungs = result.cleanup.pinch_rungs;
+        without.pinch_pockets = result.cleanup.pinch_pockets;
+        without.pinch_zip_undone = true;
+        result.cleanup = std::move(without);
+        result.build.surface = std::move(built);
+      }
+    }
+  }
   result.cleanup_seconds = seconds_since(t0);
 
   const double resolution = 2.0 * h / std::sqrt(3.0);

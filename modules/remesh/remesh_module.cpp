@@ -96,11 +96,16 @@ class RemeshModule final : public Module {
                      0.0));
     p.push_back(spec("thin-layers", ParameterType::Bool, false,
                      "smaller cells on the sides of layers thinner than the cells, so that a tet mesh can fill them "
-                     "without flat tets (more seeds there; the size elsewhere is kept)"));
+                     "without flat tets, and along contacts shorter than a cell, so that their corners stay apart "
+                     "(more seeds there; the size elsewhere is kept)"));
     p.push_back(spec("layer-ratio", ParameterType::Double, LayerSizingOptions{}.ratio,
                      "with --thin-layers: cells at most this many times the layer thickness", 0.5, 1e6));
     p.push_back(spec("layer-refinement", ParameterType::Double, LayerSizingOptions{}.max_refinement,
                      "with --thin-layers: cells at most this many times smaller than elsewhere", 1.0, 100.0));
+    p.push_back(spec("corner-ratio", ParameterType::Double, LayerSizingOptions{}.corner_ratio,
+                     "with --thin-layers: cells at most this many times the length of a contact shorter than a cell "
+                     "(0: off)",
+                     0.0, 100.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
                      "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there "
@@ -135,6 +140,7 @@ class RemeshModule final : public Module {
     options.thin_layers = parameters.get_bool("thin-layers");
     options.layer_sizing.ratio = parameters.get_double("layer-ratio");
     options.layer_sizing.max_refinement = parameters.get_double("layer-refinement");
+    options.layer_sizing.corner_ratio = parameters.get_double("corner-ratio");
 
     RemeshOptions remesh_options;
     remesh_options.seeds = options;
@@ -170,6 +176,7 @@ class RemeshModule final : public Module {
                                {"seeds_added", static_cast<long>(r.seeds.size()) - r.base_seeds},
                                {"thin_samples", r.thin_layer_samples},
                                {"pinch_vertices", r.pinch_vertices},
+                               {"short_contacts", r.short_contacts},
                                {"thinnest", std::isfinite(r.thinnest_layer) ? nlohmann::json(r.thinnest_layer)
                                                                             : nlohmann::json()},
                                {"edge_length", r.edge_length}};
@@ -204,6 +211,7 @@ class RemeshModule final : public Module {
                          {"pinch_zips", result.cleanup.pinch_zips},
                          {"pinch_rungs", result.cleanup.pinch_rungs},
                          {"pinch_pockets", result.cleanup.pinch_pockets},
+                         {"pinch_zip_undone", result.cleanup.pinch_zip_undone},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},

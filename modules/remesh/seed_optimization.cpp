@@ -30,7 +30,7 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
     n = seed_count_for_edge_length(geometry.area(), options.edge_length);
   }
   const int base_seeds = n;
-  char line[300];
+  char line[400];
   LayerSizing layers;
   if (options.thin_layers) {
     const double h = edge_length_for_seeds(geometry.area(), n);
@@ -48,9 +48,10 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
         std::snprintf(thinnest, sizeof thinnest, "thinnest %.4g at (%.10g, %.10g, %.10g)", layers.thinnest, at.x(),
                       at.y(), at.z());
       std::snprintf(line, sizeof line,
-                    "remesh: thin layers: %d thickness samples on layers thinner than %.4g (%s), %d seeds more "
-                    "for them",
-                    layers.thin_samples, h / options.layer_sizing.ratio, thinnest, n - base_seeds);
+                    "remesh: thin layers: %d thickness samples on layers thinner than %.4g (%s), %d contacts "
+                    "shorter than %.4g, %d seeds more for them",
+                    layers.thin_samples, h / options.layer_sizing.ratio, thinnest, layers.short_contacts, h,
+                    n - base_seeds);
       log.info(line);
     }
   }
@@ -65,6 +66,7 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   result.base_seeds = base_seeds;
   result.thin_layer_samples = layers.thin_samples;
   result.pinch_vertices = layers.pinch_vertices;
+  result.short_contacts = layers.short_contacts;
   result.thinnest_layer = layers.thinnest;
   return result;
 }

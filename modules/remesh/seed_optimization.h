@@ -43,6 +43,7 @@ struct SeedOptimizationResult {
   /// and what the sizing found.
   int base_seeds = 0;
   int thin_layer_samples = 0, pinch_vertices = 0;
+  int short_contacts = 0;  // contacts shorter than a cell, refined (thin-layer sizing)
   double thinnest_layer = std::numeric_limits<double>::infinity();  // away from pinch-out tips
   double alpha = 0.0;                // the boundary weight used
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason

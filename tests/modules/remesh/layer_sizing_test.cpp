@@ -66,6 +66,41 @@ TEST(LayerSizing, NoLayerThinnerThanTheCellsKeepsTheSize) {
   EXPECT_NEAR(coarse.thinnest, 0.5, 1e-12);
 }
 
+TEST(LayerSizing, ContactShorterThanACellGetsCellsOfItsLength) {
+  // A layer 0.2 thick in a unit box: each vertical box edge runs 0.4, 0.2 and 0.4 between the
+  // corners where the horizons meet it. Cells of 0.5 see no thin layer (0.2 > 0.5 / 6) but would
+  // put the two horizons' corners on an edge into one cell, which the mesh building merges.
+  const StructuralModel model = build_model(test::thin_layer_box(8, 0.2));
+  const double h = 0.5;
+  LayerSizingOptions options;
+  const LayerSizing sizing = thin_layer_sizing(model, h, options);
+  EXPECT_EQ(sizing.thin_samples, 0);
+  EXPECT_EQ(sizing.short_contacts, 12);  // 3 on each of the 4 vertical edges
+  ASSERT_TRUE(sizing.refines());
+  int at_horizons = 0;
+  for (const Corner& corner : model.corners) {
+    const double z = (model.vertices[corner.vertex] + model.frame.origin).z();
+    if (std::abs(z - 0.4) < 1e-9 || std::abs(z - 0.6) < 1e-9) {
+      EXPECT_NEAR(sizing.size[corner.vertex], 0.2, 1e-9);  // corner_ratio 1 × 0.2
+      ++at_horizons;
+    } else {
+      EXPECT_LE(sizing.size[corner.vertex], 0.4 + 1e-9);  // the 0.4 contact ending there
+    }
+  }
+  EXPECT_EQ(at_horizons, 8);
+  for (size_t a = 0; a < model.vertices.size(); ++a) {
+    EXPECT_GE(sizing.size[a], 0.2 - 1e-12);
+    EXPECT_LE(sizing.size[a], h);
+    for (size_t b = a + 1; b < model.vertices.size(); ++b)
+      ASSERT_LE(std::abs(sizing.size[a] - sizing.size[b]),
+                options.gradation * (model.vertices[a] - model.vertices[b]).norm() + 1e-9);
+  }
+  // Off: nothing to refine. Contacts shorter than the finest cells (h / 4) are left to merge.
+  options.corner_ratio = 0.0;
+  EXPECT_FALSE(thin_layer_sizing(model, h, options).refines());
+  EXPECT_EQ(thin_layer_sizing(model, 1.0).short_contacts, 8);  // the 0.2 ones are under 1.0 / 4
+}
+
 // A layer pinching out at `angle_deg`: bottom z = 0 and top z = x tan(angle) over the unit
 // square, on n × n lattices, closed by the plates x = 1, y = 0 and y = 1. One region.
 SurfaceSoup lattice_pinch_out(int n, double angle_deg) {
@@ -162,6 +197,9 @@ TEST(LayerSizing, RejectsBadOptions) {
   EXPECT_THROW(thin_layer_sizing(model, 1.0, options), ParameterError);
   options = {};
   options.facing_angle_deg = 90.0;
+  EXPECT_THROW(thin_layer_sizing(model, 1.0, options), ParameterError);
+  options = {};
+  options.corner_ratio = -1.0;
   EXPECT_THROW(thin_layer_sizing(model, 1.0, options), ParameterError);
 }
 
