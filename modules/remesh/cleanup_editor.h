@@ -313,6 +313,15 @@ class Editor {
     return plus == minus || plus < -1 || minus < -1;
   }
 
+  bool degenerate(int t) const { return is_degenerate(s_.vertices, s_.triangles[t]); }
+  // Nearly flat (a cap or a needle of a tiny edge): counted with the degenerate triangles, as a
+  // tet mesh keeping it has a flat tet, though its crossings can still be tested.
+  bool cap(int t) const {
+    const Triangle& f = s_.triangles[t];
+    const TriangleQuality q = measure_triangle(p(f[0]), p(f[1]), p(f[2]));
+    return q.max_angle_deg > kCapDeg || q.min_angle_deg < kNeedleDeg;
+  }
+
  private:
   struct Change {
     enum Kind { Moved, Changed, Added };
@@ -335,14 +344,6 @@ class Editor {
     Vec3 lo, hi;
     box(t, lo, hi);
     grid_.insert(t, lo, hi);
-  }
-  bool degenerate(int t) const { return is_degenerate(s_.vertices, s_.triangles[t]); }
-  // Nearly flat (a cap or a needle of a tiny edge): counted with the degenerate triangles, as a
-  // tet mesh keeping it has a flat tet, though its crossings can still be tested.
-  bool cap(int t) const {
-    const Triangle& f = s_.triangles[t];
-    const TriangleQuality q = measure_triangle(p(f[0]), p(f[1]), p(f[2]));
-    return q.max_angle_deg > kCapDeg || q.min_angle_deg < kNeedleDeg;
   }
   // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
   // vertices on the same side). With opposite directions along the edge (consistent

@@ -64,6 +64,9 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     const int ti = tris[i], tj = tris[(i + 1) % 3], tk = tris[(i + 2) % 3];
     const int apex = Editor::opposite(e.s_.triangles[ti], a, b);
     if (apex != Editor::opposite(e.s_.triangles[tj], a, b)) continue;
+    // Degenerate ones (on two colocated vertices, left before the zip) are the repair's: it
+    // removes such coincident pairs, while one triangle of K would stay degenerate.
+    if (e.degenerate(ti) || e.cap(ti)) return false;
     const int pp = e.s_.triangle_part[ti], pq = e.s_.triangle_part[tj], pk = e.s_.triangle_part[tk];
     if (pp == pq || pp == pk || pq == pk) return false;
     const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
@@ -117,11 +120,12 @@ void hold(Editor& e, int v) {
 }
 
 // The triangles of the parts of tp and tq around v that share their three vertices pairwise (the
-// two sides of the layer closed onto each other) become one triangle of K.
+// two sides of the layer closed onto each other) become one triangle of K; degenerate ones stay
+// for the repair (see find_front).
 void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int part_q) {
   std::vector<int> around(e.star(v));
   for (int t : around) {
-    if (!e.alive(t) || e.s_.triangle_part[t] != part_p) continue;
+    if (!e.alive(t) || e.s_.triangle_part[t] != part_p || e.degenerate(t) || e.cap(t)) continue;
     const Triangle f = e.s_.triangles[t];
     for (int u : around) {
       if (!e.alive(u) || e.s_.triangle_part[u] != part_q) continue;
