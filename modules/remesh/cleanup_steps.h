@@ -240,7 +240,9 @@ int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int pas
 //  - front edges shorter than max_thickness (notches left by steps that crossed near an end)
 //    shrink to their midpoint.
 // A front whose sides already lie on each other (P's and Q's triangles on the same vertices,
-// left by an earlier merge) closes into one triangle of K.
+// left by an earlier merge) closes into one triangle of K, unless they are degenerate or K would
+// fold onto a neighbour there (the repair removes such pairs). A notch is not closed where it
+// would crease a surface under 10 degrees.
 // The whole zip is undone when it leaves more violations than before, folds aside (a front
 // that stops in a thin layer is one; the repair opens it).
 struct PinchZips {

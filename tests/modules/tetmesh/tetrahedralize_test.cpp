@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <string>
+#include <utility>
 
 #include "framework/core/error.h"
 #include "framework/model/model_builder.h"
@@ -437,9 +439,9 @@ TEST(Tetrahedralize, ZippedPinchOutLeavesNoFlatTetsInTheTongue) {
                zipped.cleanup.pinch_zips, zipped.cleanup.pinch_rungs, zipped.cleanup.pinch_pockets, all0, all1, inner0,
                inner1);
   EXPECT_LT(inner0, 5.0);  // 2.11
-  EXPECT_GE(inner1, 5.0);  // 14.22
+  EXPECT_GE(inner1, 5.0);  // 16.00
   // The whole tongue, its ends on the box sides included (3.30 before the strips and pockets
-  // closed): 6.14.
+  // closed): 5.33.
   EXPECT_GE(all1, 5.0);
   EXPECT_GT(zipped.cleanup.pinch_rungs, 0);    // 2
   EXPECT_GT(zipped.cleanup.pinch_pockets, 0);  // 3
@@ -452,6 +454,66 @@ TEST(Tetrahedralize, ZippedPinchOutLeavesNoFlatTetsInTheTongue) {
       EXPECT_GE(x.z(), 0.5 - 1e-9);
       EXPECT_LE(x.z(), 0.51 + 1e-9) << x.transpose();
     }
+  }
+}
+
+// Edges inside one surface part where its two triangles fold back to an interior angle under
+// `deg`: every tet mesh keeping them has a tet that flat there.
+int creases_under(const StructuralModel& model, double deg) {
+  const ModelTriangles flat = flatten(model);
+  std::map<std::pair<int, int>, std::vector<int>> edges;
+  for (size_t t = 0; t < flat.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = flat.triangles[t][i], b = flat.triangles[t][(i + 1) % 3];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(t));
+    }
+  auto normal = [&](int t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    return (b - a).cross(c - a).normalized();
+  };
+  int creases = 0;
+  for (const auto& [edge, tris] : edges)
+    if (tris.size() == 2 && flat.part[tris[0]] == flat.part[tris[1]] &&
+        normal(tris[0]).dot(normal(tris[1])) < -std::cos(deg * M_PI / 180.0))
+      ++creases;
+  return creases;
+}
+
+TEST(Tetrahedralize, ZippedModelA6MeetsTheDihedralBar) {
+  // modelA6 (feature angle 80) remeshed with --thin-layers --zip-pinch-outs as from the command
+  // line, then tet-meshed with the defaults. At 5000 seeds: min dihedral >= 5 deg (issue 5).
+  // Seed 4 held a front whose two sides lay on each other at 0.6 deg from P: closed into one
+  // triangle of K it folded K onto P (0.89 deg tets); it is left to the repair now (8.83 deg).
+  // Seed 2: 7.23 deg. At 3000 seeds, seed 3, a notch merge creased K to 5-7 deg (1.6 deg tets
+  // there); it is refused now. No surface creases under 10 deg in any of them.
+  VOROSEAL_REQUIRE_SHARED(path, "ring/modelA6.mesh");
+  ReadOptions read;
+  read.build.feature_angle_deg = 80.0;
+  const StructuralModel input = read_model(path, read);
+  Logger log = quiet_logger();
+  Progress progress(false);
+  for (const auto& [seeds, seed] : {std::pair{5000, 2}, std::pair{5000, 4}, std::pair{3000, 3}}) {
+    SCOPED_TRACE(std::to_string(seeds) + " seeds, seed " + std::to_string(seed));
+    RemeshOptions options;
+    options.seeds.num_seeds = seeds;
+    options.seeds.random_seed = static_cast<std::uint64_t>(seed);
+    options.seeds.thin_layers = true;
+    options.cleanup.min_feature = -kDefaultMinFeatureFactor;
+    options.cleanup.fidelity_tolerance = -kDefaultFidelityFactor;
+    options.cleanup.zip_wedge_deg = 12.0;
+    const RemeshResult result = remesh(input, options, log, progress);
+    EXPECT_GT(result.cleanup.pinch_zips, 0);
+    EXPECT_FALSE(result.cleanup.pinch_zip_undone);
+    EXPECT_EQ(result.cleanup.invalid_left(), 0);
+    EXPECT_EQ(creases_under(result.model, 10.0), 0);
+    if (seeds != 5000) continue;
+    const VolumeMesh mesh = tetrahedralize(result.model, TetmeshOptions{}, log);
+    const VolumeQuality q = measure_volume(mesh);
+    std::fprintf(stderr, "[figures] modelA6 %d seeds, seed %d: %d zips, %ld tets, min dihedral %.2f deg\n", seeds,
+                 seed, result.cleanup.pinch_zips, q.tets, q.min_dihedral_deg);
+    EXPECT_GE(q.min_dihedral_deg, 5.0);
+    expect_valid_mesh(result.model, mesh);
   }
 }
 
