@@ -73,14 +73,17 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
       reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
   // Last, as the angle passes trade shape for the smallest angle: each vertex goes where its
   // triangles are best shaped, no triangle getting sharper than 30 degrees.
-  for (int i = 0; i < options.quality_passes; ++i) {
-    const int moved = optimize_quality(e, projector, options.quality_below);
-    report.quality_moves += moved;
-    report.flips += flip_edges(e, options.flip_flatness_deg);
-    if (moved == 0) break;
-  }
-  report.sharp_moves +=
-      reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
+  auto quality_passes = [&]() {
+    for (int i = 0; i < options.quality_passes; ++i) {
+      const int moved = optimize_quality(e, projector, options.quality_below);
+      report.quality_moves += moved;
+      report.flips += flip_edges(e, options.flip_flatness_deg);
+      if (moved == 0) break;
+    }
+    report.sharp_moves +=
+        reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
+  };
+  quality_passes();
   if (options.zip_wedge_deg > 0.0) {
     const PinchZips zips = zip_pinch_outs(e, options.min_feature, options.zip_wedge_deg);
     report.pinch_zips = zips.steps;
@@ -92,14 +95,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     // 9 runs: 5 -> 7 reach a 5 deg tet mesh; at 12,000 seeds 4.9 -> 6.6 deg).
     if (zips.edits() > 0) {
       angle_passes();
-      for (int i = 0; i < options.quality_passes; ++i) {
-        const int moved = optimize_quality(e, projector, options.quality_below);
-        report.quality_moves += moved;
-        report.flips += flip_edges(e, options.flip_flatness_deg);
-        if (moved == 0) break;
-      }
-      report.sharp_moves +=
-          reduce_sharp_triangles(e, projector, options.sharp_passes, options.flip_flatness_deg, report.flips);
+      quality_passes();
     }
   }
   for (int i = 0; options.wedge_dihedral_deg > 0.0 && i < 8; ++i) {
