@@ -21,6 +21,8 @@ class ContactArcs {
         arc_[c][i] = arc_[c][i - 1] + (m.vertices[line[i]] - m.vertices[line[i - 1]]).norm();
     }
   }
+  /// Length of contact c along its vertices.
+  double length(int c) const { return arc_[c].empty() ? 0.0 : arc_[c].back(); }
   /// Arc length of the point of contact c nearest to x.
   double position(int c, const Vec3& x) const {
     const auto& line = m_.contacts[c].vertices;

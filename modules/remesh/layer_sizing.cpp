@@ -10,6 +10,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/contact_wedges.h"
+#include "modules/remesh/contact_arcs.h"
 #include "modules/remesh/point_cloud.h"
 #include "modules/remesh/triangle_grid.h"
 
@@ -143,12 +144,11 @@ LayerSizing thin_layer_sizing(const StructuralModel& model, double h, const Laye
   // Contacts between two corners shorter than h (but not than the finest cells: those merge
   // whatever the size), refined after the tips' rule below.
   std::vector<std::pair<int, double>> short_contacts;  // contact, size along it
+  const ContactArcs arcs(model);
   for (size_t c = 0; c < model.contacts.size() && options.corner_ratio > 0.0; ++c) {
     const Contact& contact = model.contacts[c];
     if (contact.vertices.size() < 2 || contact.vertices.front() == contact.vertices.back()) continue;
-    double length = 0.0;
-    for (size_t i = 1; i < contact.vertices.size(); ++i)
-      length += (model.vertices[contact.vertices[i]] - model.vertices[contact.vertices[i - 1]]).norm();
+    const double length = arcs.length(static_cast<int>(c));
     if (!(length < h) || length < min_size) continue;
     short_contacts.emplace_back(static_cast<int>(c), std::clamp(options.corner_ratio * length, min_size, h));
   }
