@@ -87,6 +87,15 @@ namespace {
 
 using namespace zip;
 
+// Whether P (regions rp) and Q (rq) both bound region r, the layer, their regions beyond it (A
+// and B) differ from r and from each other, and K (rk) lies between A and B: a pinch-out of r
+// past which K runs on.
+bool pinches_out(std::pair<int, int> rp, std::pair<int, int> rq, std::pair<int, int> rk, int r) {
+  if (r != rq.first && r != rq.second) return false;
+  const int ra = other_region(rp, r), rb = other_region(rq, r);
+  return ra != r && rb != r && ra != rb && joins(rk, ra, rb);
+}
+
 bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness, PinchFront& z) {
   std::vector<int> tris;
   e.edge_triangles(a, b, tris);
@@ -105,9 +114,8 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     if (pp == pq || pp == pk || pq == pk) return false;
     const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
     for (int r : {rp.first, rp.second}) {
-      if (r < -1 || (r != rq.first && r != rq.second)) continue;
-      const int ra = other_region(rp, r), rb = other_region(rq, r);
-      if (ra == r || rb == r || ra == rb || !joins(rk, ra, rb)) continue;
+      if (r < -1 || !pinches_out(rp, rq, rk, r)) continue;
+      const int ra = other_region(rp, r);
       z = PinchFront{ti, tj, apex, apex, pk, r, (rp.first == ra) == (rk.first == ra), -1};
       return true;
     }
@@ -124,9 +132,8 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
     // The region inside the wedge, on the side of lo facing increasing angles.
     const int r = lo.forward ? rp.first : rp.second;
-    const int ra = other_region(rp, r), rb = other_region(rq, r);
-    if (r < -1 || ra == r || rb == r || ra == rb || (r != rq.first && r != rq.second)) return false;
-    if (!joins(rk, ra, rb)) return false;
+    if (r < -1 || !pinches_out(rp, rq, rk, r)) return false;
+    const int ra = other_region(rp, r);
     z.tp = lo.triangle;
     z.tq = hi.triangle;
     z.c1 = Editor::opposite(e.s_.triangles[z.tp], a, b);
@@ -147,51 +154,52 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
   return false;
 }
 
+// The edges of the triangles of `tris` (of `part` only, when >= 0) for which test(a, b) holds,
+// each counted once.
+template <class Test>
+int count_edges(Editor& e, const std::vector<int>& tris, int part, Test&& test) {
+  std::vector<std::pair<int, int>> edges;
+  for (int t : tris) {
+    if (!e.alive(t) || (part >= 0 && e.s_.triangle_part[t] != part)) continue;
+    const Triangle& f = e.s_.triangles[t];
+    for (int i = 0; i < 3; ++i) edges.push_back({std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])});
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return static_cast<int>(
+      std::count_if(edges.begin(), edges.end(), [&](const auto& ab) { return test(ab.first, ab.second); }));
+}
+
 // Edges of `tris` where a triangle of part k folds onto a neighbour (a wedge under kFoldDeg in
 // the radial order).
 int folds_of_k(Editor& e, const std::vector<int>& tris, int part_k) {
-  std::vector<std::pair<int, int>> edges;
   std::vector<int> around;
   std::vector<FanBlade> fan;
-  for (int t : tris) {
-    if (!e.alive(t) || e.s_.triangle_part[t] != part_k) continue;
-    const Triangle& f = e.s_.triangles[t];
-    for (int i = 0; i < 3; ++i) {
-      const int a = std::min(f[i], f[(i + 1) % 3]), b = std::max(f[i], f[(i + 1) % 3]);
-      e.edge_triangles(a, b, around);
-      if (around.size() < 3 || !e.radial_order(a, b, around, fan)) continue;
-      const size_t n = fan.size();
-      for (size_t j = 0; j < n; ++j) {
-        const bool k_there = e.s_.triangle_part[fan[j].triangle] == part_k ||
-                             e.s_.triangle_part[fan[(j + 1) % n].triangle] == part_k;
-        if (k_there && wedge_after(fan, j) < kFoldDeg * M_PI / 180.0) edges.push_back({a, b});
-      }
+  return count_edges(e, tris, part_k, [&](int a, int b) {
+    e.edge_triangles(a, b, around);
+    if (around.size() < 3 || !e.radial_order(a, b, around, fan)) return false;
+    const size_t n = fan.size();
+    for (size_t j = 0; j < n; ++j) {
+      const bool k_there = e.s_.triangle_part[fan[j].triangle] == part_k ||
+                           e.s_.triangle_part[fan[(j + 1) % n].triangle] == part_k;
+      if (k_there && wedge_after(fan, j) < kFoldDeg * M_PI / 180.0) return true;
     }
-  }
-  std::sort(edges.begin(), edges.end());
-  return static_cast<int>(std::unique(edges.begin(), edges.end()) - edges.begin());
+    return false;
+  });
 }
 
 // Edges of `tris` inside one part (its two triangles there) where the part folds back to an
 // interior angle under kCreaseDeg: every tet mesh keeping them has a tet that flat there.
 constexpr double kCreaseDeg = 10.0;
 int sharp_creases(Editor& e, const std::vector<int>& tris) {
-  std::vector<std::pair<int, int>> edges;
   std::vector<int> pair;
-  for (int t : tris) {
-    if (!e.alive(t)) continue;
-    const Triangle& f = e.s_.triangles[t];
-    for (int i = 0; i < 3; ++i) {
-      const int a = std::min(f[i], f[(i + 1) % 3]), b = std::max(f[i], f[(i + 1) % 3]);
-      e.edge_triangles(a, b, pair);
-      if (pair.size() != 2 || e.s_.triangle_part[pair[0]] != e.s_.triangle_part[pair[1]]) continue;
-      // Consistently oriented: the interior angle is 180 deg minus the angle between the normals.
-      const Vec3 n0 = e.normal(pair[0]).normalized(), n1 = e.normal(pair[1]).normalized();
-      if (n0.dot(n1) < -std::cos(kCreaseDeg * M_PI / 180.0)) edges.push_back({a, b});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  return static_cast<int>(std::unique(edges.begin(), edges.end()) - edges.begin());
+  return count_edges(e, tris, -1, [&](int a, int b) {
+    e.edge_triangles(a, b, pair);
+    if (pair.size() != 2 || e.s_.triangle_part[pair[0]] != e.s_.triangle_part[pair[1]]) return false;
+    // Consistently oriented: the interior angle is 180 deg minus the angle between the normals.
+    const Vec3 n0 = e.normal(pair[0]).normalized(), n1 = e.normal(pair[1]).normalized();
+    return n0.dot(n1) < -std::cos(kCreaseDeg * M_PI / 180.0);
+  });
 }
 
 // A front edge shorter than max_length (steps that crossed near an end leave them; the tets on
@@ -208,11 +216,10 @@ int merge_short_front_edge(Editor& e, int a, int b, double max_length) {
   // the layer's region, K lies between the regions beyond them.
   bool front = false;
   for (int k = 0; k < 3 && !front; ++k) {
+    const auto rk = e.part_regions_[e.s_.triangle_part[tris[k]]];
     const auto rp = e.part_regions_[e.s_.triangle_part[tris[(k + 1) % 3]]];
     const auto rq = e.part_regions_[e.s_.triangle_part[tris[(k + 2) % 3]]];
-    for (int r : {rp.first, rp.second})
-      if (r >= 0 && (r == rq.first || r == rq.second) && other_region(rp, r) != other_region(rq, r))
-        front = front || joins(e.part_regions_[e.s_.triangle_part[tris[k]]], other_region(rp, r), other_region(rq, r));
+    for (int r : {rp.first, rp.second}) front = front || (r >= 0 && pinches_out(rp, rq, rk, r));
   }
   if (!front) return -1;
   std::vector<int> before;
@@ -390,8 +397,8 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     bool absorbed = false;  // the step closed a pocket too
     Violations in_pocket;  // what the pocket the step closes held before (see absorb_pocket)
     auto acceptable = [&](const Violations& was, const Violations& is) {
-    return pocket_step_acceptable(was, is, in_pocket);
-  };
+      return pocket_step_acceptable(was, is, in_pocket);
+    };
     // Each step is an edit inside the zip's own transaction (see below).
     const bool done = transact_if(e, before, true, acceptable, [&](std::vector<int>& after) {
       in_pocket = Violations{};
