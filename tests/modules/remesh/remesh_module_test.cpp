@@ -137,6 +137,7 @@ TEST(RemeshModule, ThinLayersAddSeedsOnTheLayerAndReportThem) {
   EXPECT_LT(wider.at("seeds").get<int>(), sized.at("seeds").get<int>());
   EXPECT_GT(wider.at("seeds").get<int>(), 200);
   EXPECT_THROW(run({{"thin-layers", true}, {"layer-refinement", 0.5}}), ParameterError);
+  EXPECT_THROW(run({{"thin-layers", true}, {"corner-ratio", -1.0}}), ParameterError);
 }
 
 TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
