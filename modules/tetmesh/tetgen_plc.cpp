@@ -4,6 +4,18 @@
 
 namespace voroseal {
 
+std::vector<int> plc_vertices(const ModelTriangles& flat, size_t model_vertices) {
+  std::vector<int> vertices;
+  std::vector<bool> used(model_vertices, false);
+  for (const Triangle& t : flat.triangles)
+    for (int v : t)
+      if (!used[v]) {
+        used[v] = true;
+        vertices.push_back(v);
+      }
+  return vertices;
+}
+
 PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
   PlcMap map;
   const ModelTriangles flat = flatten(model);
@@ -11,13 +23,9 @@ PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
   map.region_points = region_points(model);  // throws first: cheaper than a failed TetGen run
 
   // Only vertices used by triangles: TetGen would insert any other point as a volume vertex.
+  map.point_vertex = plc_vertices(flat, model.vertices.size());
   map.vertex_point.assign(model.vertices.size(), -1);
-  for (const Triangle& t : flat.triangles)
-    for (int v : t)
-      if (map.vertex_point[v] < 0) {
-        map.vertex_point[v] = static_cast<int>(map.point_vertex.size());
-        map.point_vertex.push_back(v);
-      }
+  for (size_t i = 0; i < map.point_vertex.size(); ++i) map.vertex_point[map.point_vertex[i]] = static_cast<int>(i);
   map.facet_triangle = flat.triangles;
   map.facet_part = flat.part;
 

@@ -25,6 +25,10 @@ struct PlcMap {
   std::vector<RegionPoint> region_points;  // one per region, inside it
 };
 
+/// The model vertices the PLC's points are, in order: the vertices used by `flat`'s triangles,
+/// in order of first use (VolumeMesh vertices below this count are these points, see build_plc).
+std::vector<int> plc_vertices(const ModelTriangles& flat, size_t model_vertices);
+
 /// Fills `in` (which must be empty) with the model: the vertices used by its triangles, one
 /// triangular facet per triangle with marker = part + 1, and one region point per region with
 /// attribute = region + 1 and no volume bound. Coordinates are the model's local frame.

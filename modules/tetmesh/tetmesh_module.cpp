@@ -65,7 +65,7 @@ class TetmeshModule : public Module {
                          "maximum tet volume in model units^3 (switch a); no bound when absent"};
     volume.min = 0.0;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
-                       "keep the surface triangles exactly (switch Y): tets conformal to the surfaces"};
+                       "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles (bisected only by --refine-surface-below)"};
     ParameterSpec slivers{"sliver-passes", ParameterType::Int, 4,
                           "extra TetGen runs with interior points added next to the slivers TetGen leaves by the kept "
                           "surface"};
@@ -77,7 +77,17 @@ class TetmeshModule : public Module {
                            "0: TetGen's own thresholds (165/179)"};
     optimise.min = 0.0;
     optimise.max = 179.9;
-    return {output, quality, dihedral, volume, keep, slivers, optimise};
+    ParameterSpec refine{"refine-surface-below", ParameterType::Double, 5.0,
+                         "bisect the surface edges under tets flatter than this (degrees) that no interior point "
+                         "opens (a layer thinner than its triangles) and mesh again: same surfaces, finer "
+                         "triangles there; 0 keeps the surface triangles exactly"};
+    refine.min = 0.0;
+    refine.max = 60.0;
+    ParameterSpec rounds{"refine-surface-rounds", ParameterType::Int, 4,
+                         "at most this many surface bisection rounds (each halves the edges it splits)"};
+    rounds.min = 0;
+    rounds.max = 10;
+    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -90,6 +100,8 @@ class TetmeshModule : public Module {
     options.keep_surface = parameters.get_bool("keep-surface");
     options.sliver_passes = static_cast<int>(parameters.get_int("sliver-passes"));
     options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");
+    options.refine_surface_below_deg = parameters.get_double("refine-surface-below");
+    options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
 
     const auto start = std::chrono::steady_clock::now();
     context.progress.start("tetmesh " + model.name, 0);
@@ -99,7 +111,9 @@ class TetmeshModule : public Module {
     const VolumeQuality quality = measure_volume(*mesh);
     // The scan measures every tet again: only when some tet is that flat.
     const FlatTets flat = quality.min_dihedral_deg < kFlatTetDeg ? find_nearly_flat_tets(*mesh) : FlatTets{};
-    const long nonconforming = static_cast<long>(model_triangles_not_in_tets(model, *mesh).size());
+    // Against the triangles TetGen got: the model's, or their bisected halves.
+    const StructuralModel& meshed = run.refined_model ? *run.refined_model : model;
+    const long nonconforming = static_cast<long>(model_triangles_not_in_tets(meshed, *mesh).size());
 
     nlohmann::json regions = nlohmann::json::array();
     double max_error = 0.0;
@@ -144,6 +158,9 @@ class TetmeshModule : public Module {
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
+        {"surface_bisection", {{"rounds", run.surface_rounds},
+                               {"edges", run.bisected_edges},
+                               {"triangles", meshed.num_triangles()}}},
         {"thinnest_wedge_deg", wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},

@@ -16,6 +16,7 @@
 #include <unordered_set>
 
 #include "framework/core/error.h"
+#include "modules/tetmesh/surface_bisection.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "modules/tetmesh/triangle_tree.h"
@@ -617,28 +618,12 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
   return s;
 }
 
-VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                          TetmeshRun* run) {
-  if (!(options.radius_edge_ratio == 0.0 || (options.radius_edge_ratio >= 1.0 && std::isfinite(options.radius_edge_ratio))))
-    throw ParameterError("radius-edge ratio " + number(options.radius_edge_ratio) +
-                         " out of range: 0 (no quality refinement) or a finite value >= 1");
-  if (!(options.min_dihedral_deg >= 0.0 && options.min_dihedral_deg < 70.0))
-    throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
-  if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
-    throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
-  if (!(options.sliver_max_dihedral_deg == 0.0 ||
-        (options.sliver_max_dihedral_deg > 90.0 && options.sliver_max_dihedral_deg < 180.0)))
-    throw ParameterError("sliver dihedral threshold " + number(options.sliver_max_dihedral_deg) +
-                         " out of range: 0 (TetGen's own) or in (90, 180) degrees");
-  if (!(options.sliver_passes >= 0 && options.sliver_passes <= 10))
-    throw ParameterError("sliver passes " + std::to_string(options.sliver_passes) + " out of range [0, 10]");
-  if (!(options.attempts >= 1 && options.attempts <= 10))
-    throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
+namespace {
 
-  TetmeshRun local_run;
-  TetmeshRun& info = run != nullptr ? *run : local_run;
-  info = TetmeshRun{};
-
+/// One tet mesh of `model`: TetGen (in more facet orders when needed), then the sliver passes.
+/// Fills `info` except the census and the surface bisection figures.
+ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                               TetmeshRun& info) {
   auto start = std::chrono::steady_clock::now();
   tetgenio in;
   PlcMap map = build_plc(model, in);
@@ -780,9 +765,134 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     info.sliver_points = static_cast<int>(kept.size());
   }
 
-  VolumeMesh& mesh = best.mesh;
-  info.steiner_points = static_cast<int>(mesh.vertices.size()) - plc_points;
+  info.steiner_points = static_cast<int>(best.mesh.vertices.size()) - plc_points;
   info.split_facets = best.split_facets;
+  return best;
+}
+
+/// The surface edges to bisect against the tets of `mesh` flatter than `bound_deg` that are not
+/// in a wedge between two surfaces (no bisection opens those): a tet's own edges that are
+/// surface edges (a layer sliver's two edges on its two sides), else the longest surface edge at
+/// each of its vertices that lies on a surface. Pairs of model vertex ids.
+std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& model, const VolumeMesh& mesh,
+                                                      double bound_deg) {
+  const ModelTriangles flat = flatten(model);
+  const std::vector<int> vertex_of_point = plc_vertices(flat, model.vertices.size());
+  std::unordered_set<Key, KeyHash> surface_edges;
+  // Per model vertex: its longest surface edge (squared length, other end).
+  std::vector<std::pair<double, int>> longest(model.vertices.size(), {-1.0, -1});
+  for (const Triangle& t : flat.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      surface_edges.insert(sorted_key(a, b, -1));
+      const double length = (model.vertices[a] - model.vertices[b]).squaredNorm();
+      if (length > longest[a].first) longest[a] = {length, b};
+      if (length > longest[b].first) longest[b] = {length, a};
+    }
+  const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
+  std::set<std::array<int, 2>> edges;
+  auto add = [&](int a, int b) { edges.insert({std::min(a, b), std::max(a, b)}); };
+  for (const Tetrahedron& t : mesh.tets) {
+    const auto dihedral = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
+    if (*std::min_element(dihedral.begin(), dihedral.end()) >= bound_deg) continue;
+    if (surface_wedge(faces_on_surface(surface_faces, t), dihedral, bound_deg)) continue;
+    int v[4];
+    for (int k = 0; k < 4; ++k) v[k] = t[k] < static_cast<int>(vertex_of_point.size()) ? vertex_of_point[t[k]] : -1;
+    bool own = false;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (v[a] >= 0 && v[b] >= 0 && surface_edges.count(sorted_key(v[a], v[b], -1))) {
+          add(v[a], v[b]);
+          own = true;
+        }
+    if (own) continue;
+    for (int k = 0; k < 4; ++k)
+      if (v[k] >= 0 && longest[v[k]].second >= 0) add(v[k], longest[v[k]].second);
+  }
+  return {edges.begin(), edges.end()};
+}
+
+/// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
+/// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
+/// angle rises. `best` and `info` become those of the last round kept.
+void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log, TetmeshRun& info,
+                    ConvertedMesh& best) {
+  const double bound = options.refine_surface_below_deg;
+  const bool needle_filled = info.surface_needles > 0.002 * model.num_triangles();  // raw inputs: see mesh_with_tetgen
+  if (!options.keep_surface || !(bound > 0.0) || needle_filled) return;
+  double best_angle = min_dihedral(best.mesh);
+  double seconds = info.plc_seconds + info.tetgen_seconds;  // every round's, kept or not
+  std::shared_ptr<const StructuralModel> refined;
+  int bisected = 0;
+  for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
+    const StructuralModel& from = refined ? *refined : model;
+    const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound);
+    if (edges.empty()) break;  // every tet below the bound is in a wedge
+    auto next = std::make_shared<StructuralModel>(from);
+    TetmeshRun trial;
+    ConvertedMesh mesh;
+    int split = 0;
+    try {
+      split = bisect_edges(*next, edges);
+      mesh = mesh_with_tetgen(*next, options, log, trial);
+    } catch (const MesherError& e) {
+      log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) + " failed (" + e.what() +
+                "); keeping the previous mesh");
+      break;
+    }
+    seconds += trial.plc_seconds + trial.tetgen_seconds;
+    const double angle = min_dihedral(mesh.mesh);
+    log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
+              " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
+    if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
+    bisected += split;
+    trial.surface_rounds = round;
+    info = std::move(trial);
+    best = std::move(mesh);
+    best_angle = angle;
+    refined = std::move(next);
+  }
+  info.bisected_edges = bisected;
+  info.refined_model = refined;
+  info.tetgen_seconds = seconds - info.plc_seconds;
+  if (refined)
+    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
+             " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
+             " deg: min dihedral " + number(best_angle) + " deg");
+}
+
+}  // namespace
+
+VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                          TetmeshRun* run) {
+  if (!(options.radius_edge_ratio == 0.0 || (options.radius_edge_ratio >= 1.0 && std::isfinite(options.radius_edge_ratio))))
+    throw ParameterError("radius-edge ratio " + number(options.radius_edge_ratio) +
+                         " out of range: 0 (no quality refinement) or a finite value >= 1");
+  if (!(options.min_dihedral_deg >= 0.0 && options.min_dihedral_deg < 70.0))
+    throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
+  if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
+    throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
+  if (!(options.sliver_max_dihedral_deg == 0.0 ||
+        (options.sliver_max_dihedral_deg > 90.0 && options.sliver_max_dihedral_deg < 180.0)))
+    throw ParameterError("sliver dihedral threshold " + number(options.sliver_max_dihedral_deg) +
+                         " out of range: 0 (TetGen's own) or in (90, 180) degrees");
+  if (!(options.sliver_passes >= 0 && options.sliver_passes <= 10))
+    throw ParameterError("sliver passes " + std::to_string(options.sliver_passes) + " out of range [0, 10]");
+  if (!(options.refine_surface_below_deg >= 0.0 && options.refine_surface_below_deg < 70.0))
+    throw ParameterError("surface refinement angle " + number(options.refine_surface_below_deg) + " out of range [0, 70)");
+  if (!(options.refine_surface_rounds >= 0 && options.refine_surface_rounds <= 10))
+    throw ParameterError("surface bisection rounds " + std::to_string(options.refine_surface_rounds) +
+                         " out of range [0, 10]");
+  if (!(options.attempts >= 1 && options.attempts <= 10))
+    throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
+
+  TetmeshRun local_run;
+  TetmeshRun& info = run != nullptr ? *run : local_run;
+  info = TetmeshRun{};
+  ConvertedMesh best = mesh_with_tetgen(model, options, log, info);
+  refine_surface(model, options, log, info, best);
+
+  VolumeMesh& mesh = best.mesh;
   info.slivers = sliver_census(mesh, options.min_dihedral_deg);
   if (info.slivers.total() > 0) {
     std::string groups;

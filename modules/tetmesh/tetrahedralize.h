@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,18 @@ struct TetmeshOptions {
   /// min_dihedral_deg and TetGen runs again, as long as the smallest dihedral angle rises (see
   /// tetrahedralize()). 0 disables them.
   int sliver_passes = 4;
+  /// Surface bisection against the slivers that no interior point opens (kept surface only):
+  /// while some tet is flatter than this (degrees) and not in a wedge between two surfaces, the
+  /// surface edges under such tets are split at their midpoints by longest-edge bisection (see
+  /// surface_bisection.h: the surfaces keep their exact geometry, their triangles their shape
+  /// within a factor 2 of angle) and TetGen runs again, as long as the smallest dihedral angle
+  /// rises. These are mostly tets across a layer thinner than its triangles are wide: all four
+  /// vertices on the layer's two sides, angles of about 1.4 × thickness / edge radians, halved
+  /// edges double them. The output triangles are then the finer ones (TetmeshRun::refined_model);
+  /// 0 keeps the model's triangles exactly.
+  double refine_surface_below_deg = 5.0;
+  /// At most this many bisection rounds (each one halves the edges it splits).
+  int refine_surface_rounds = 4;
   /// TetGen runs with different facet orders when one crashes (a failed assertion), fails
   /// with an internal error or, under Y, splits surface triangles: TetGen 1.5 recovers edges in
   /// facet order and some orders avoid its weaknesses (see tetrahedralize()).
@@ -112,6 +125,11 @@ struct TetmeshRun {
   double surface_min_angle_deg = 180.0;   // smallest angle of the model's triangles
   long surface_needles = 0;               // model triangles sharper than 1°
   SliverCensus slivers;                   // tets left below min_dihedral_deg (none counted when 0)
+  int surface_rounds = 0;                 // surface bisection rounds kept
+  int bisected_edges = 0;                 // surface edges they split
+  /// The model with the bisected surfaces TetGen meshed last (the output triangles are its
+  /// triangles); null when no round was kept.
+  std::shared_ptr<const StructuralModel> refined_model;
   double plc_seconds = 0.0;               // building the PLC (region points included)
   double tetgen_seconds = 0.0;            // all runs
   std::string tetgen_output;              // what TetGen printed (captured) for the kept mesh

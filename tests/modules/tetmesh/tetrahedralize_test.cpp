@@ -299,6 +299,7 @@ TEST(Tetrahedralize, SliverThresholdSplitsSliversAcrossAThinLayer) {
   TetmeshOptions options;
   options.sliver_passes = 0;
   options.sliver_max_dihedral_deg = 0;
+  options.refine_surface_below_deg = 0;  // the surface bisection would open them too
   const VolumeMesh before = tetrahedralize(model, options, log);
   options.sliver_max_dihedral_deg = TetmeshOptions{}.sliver_max_dihedral_deg;
   const VolumeMesh after = tetrahedralize(model, options, log);
@@ -326,6 +327,7 @@ TEST(Tetrahedralize, SliverPassesRaiseTheSmallestDihedralAngle) {
   TetmeshOptions options;
   options.sliver_max_dihedral_deg = 0;
   options.sliver_passes = 0;
+  options.refine_surface_below_deg = 0;
   const double without = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
   options.sliver_passes = TetmeshOptions{}.sliver_passes;
   TetmeshRun run;
@@ -346,6 +348,7 @@ TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   Logger log = quiet_logger();
   TetmeshOptions options;
   options.sliver_passes = 0;
+  options.refine_surface_below_deg = 0;
   const double without = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
   options.sliver_passes = TetmeshOptions{}.sliver_passes;
   TetmeshRun run;
@@ -358,6 +361,40 @@ TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   EXPECT_GT(q.min_dihedral_deg, without + 1.0);
   EXPECT_EQ(run.slivers.total(), sliver_census(mesh, options.min_dihedral_deg).total());
   expect_valid_mesh(model, mesh);
+}
+
+TEST(Tetrahedralize, SurfaceBisectionOpensTheTetsAcrossAThinLayer) {
+  // A layer 0.02 thick between horizons of 0.125 triangles: neither TetGen nor interior points
+  // open the tets across it. Bisecting the horizon edges under them, round after round, does:
+  // same surfaces, finer triangles there.
+  const StructuralModel model = build_model(test::thin_layer_box(8, 0.02));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.refine_surface_below_deg = 0;
+  const VolumeMesh kept = tetrahedralize(model, options, log);
+  options.refine_surface_below_deg = 5.0;
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  const double before = measure_volume(kept).min_dihedral_deg, after = measure_volume(mesh).min_dihedral_deg;
+  std::fprintf(stderr, "[figures] thin layer 0.02: min dihedral %.2f deg with the surface kept, %.2f after %d rounds (%d edges)\n",
+               before, after, run.surface_rounds, run.bisected_edges);
+  EXPECT_LT(before, 5.0);
+  EXPECT_GE(after, 5.0);
+  EXPECT_GE(run.surface_rounds, 1);
+  EXPECT_GT(run.bisected_edges, 0);
+  ASSERT_TRUE(run.refined_model);
+  const StructuralModel& refined = *run.refined_model;
+  EXPECT_GT(refined.num_triangles(), model.num_triangles());
+  // The output triangles are the bisected model's; its regions enclose the same volumes.
+  expect_valid_mesh(refined, mesh);
+  for (size_t r = 0; r < model.regions.size(); ++r)
+    EXPECT_NEAR(refined.signed_volume(refined.regions[r].sides), model.signed_volume(model.regions[r].sides), 1e-12);
+  // With the rounds off, nothing changes: the model's own triangles.
+  options.refine_surface_rounds = 0;
+  TetmeshRun none;
+  expect_valid_mesh(model, tetrahedralize(model, options, log, &none));
+  EXPECT_FALSE(none.refined_model);
+  EXPECT_EQ(none.bisected_edges, 0);
 }
 
 TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
@@ -428,8 +465,10 @@ TEST(Tetrahedralize, ZippedPinchOutLeavesNoFlatTetsInTheTongue) {
     return c.holes_left + c.leaks_left + c.intersections_left + c.pinches_left + c.degenerate_left + c.folds_left;
   };
   EXPECT_LE(left(zipped.cleanup), left(plain.cleanup));
-  const VolumeMesh a = tetrahedralize(plain.model, TetmeshOptions{}, log);
-  const VolumeMesh b = tetrahedralize(zipped.model, TetmeshOptions{}, log);
+  TetmeshOptions kept;  // the surfaces' own triangles: the surface bisection opens the tongue's tets too
+  kept.refine_surface_below_deg = 0;
+  const VolumeMesh a = tetrahedralize(plain.model, kept, log);
+  const VolumeMesh b = tetrahedralize(zipped.model, kept, log);
   // The middle of the tongue, farther than two cells from the sides.
   const double inner0 = min_dihedral_between(a, 0.35, 0.65), inner1 = min_dihedral_between(b, 0.35, 0.65);
   const double all0 = measure_volume(a).min_dihedral_deg, all1 = measure_volume(b).min_dihedral_deg;
