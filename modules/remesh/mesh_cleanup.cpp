@@ -99,7 +99,9 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
     }
   }
   for (int i = 0; options.wedge_dihedral_deg > 0.0 && i < 8; ++i) {
-    const int moved = open_wedge_tets(e, projector, options.wedge_dihedral_deg);
+    // Up to half of d_min off the surfaces: where two surfaces closer than d_min may merge,
+    // opening their wedge that much stays within the same tolerance.
+    const int moved = open_wedge_tets(e, projector, options.wedge_dihedral_deg, 0.5 * options.min_feature);
     report.wedge_moves += moved;
     if (moved == 0) break;
   }

@@ -48,7 +48,8 @@ struct CleanupOptions {
   int sharp_passes = 4;
   /// Where two parts meet at a thin wedge along a contact, any tet mesh keeping the surfaces
   /// holds the tetrahedron of the contact edge and the two apexes: their vertices move to make
-  /// those tets' smallest dihedral angle at least this (degrees) where they can. A free border
+  /// those tets' smallest dihedral angle at least this (degrees) where they can, along the
+  /// surfaces, else (apexes off the contact) off them by up to min_feature / 2. A free border
   /// (fault tip) closer to a part it touches than min_feature and than tan(this) times the
   /// triangles there joins the part. 0 disables both.
   double wedge_dihedral_deg = 8.0;

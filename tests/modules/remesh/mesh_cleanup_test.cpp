@@ -473,6 +473,57 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
   EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left, 0);
 }
 
+TEST(MeshCleanup, LiftsTheApexesOfAWedgeThinnerThanTheBound) {
+  // Two sheets meeting at a contact (x = 0) at 4 degrees: the tet of each contact edge and its
+  // two apexes has that angle whatever slides along the sheets. With d_min, the tilted sheet's
+  // first row may leave its plane by up to d_min / 2 to open the wedge; without, it may not.
+  const int n = 6;
+  const double tilt = std::tan(4.0 * M_PI / 180.0);
+  SurfaceSoup soup;
+  auto point = [&](int sheet, int i, int j) {
+    if (i == 0) return j;
+    return (n + 1) + ((sheet * n) + (i - 1)) * (n + 1) + j;
+  };
+  for (int j = 0; j <= n; ++j) soup.points.push_back({0, j * 1.0 / n, 0});
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int i = 1; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) soup.points.push_back({i * 1.0 / n, j * 1.0 / n, sheet == 0 ? 0.0 : tilt * i / n});
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const int p00 = point(sheet, i, j), p10 = point(sheet, i + 1, j), p01 = point(sheet, i, j + 1),
+                  p11 = point(sheet, i + 1, j + 1);
+        soup.triangles.push_back({p00, p10, p11});
+        soup.triangles.push_back({p00, p11, p01});
+        soup.triangle_group.insert(soup.triangle_group.end(), {sheet, sheet});
+      }
+  soup.groups = {{"base", "base", SurfaceKind::Horizon, ""}, {"onlap", "onlap", SurfaceKind::Horizon, ""}};
+  const StructuralModel input = build_model(soup);
+  ASSERT_EQ(input.parts.size(), 2u);
+  const SurfaceProjector projector(input);
+  const RemeshedSurface given = as_remeshed(input);
+  const double before = forced_wedge_dihedral(given, 0, 1);
+  ASSERT_LT(before, 4.5);
+
+  CleanupOptions without = moves_off(), with = moves_off();
+  with.min_feature = 0.04;  // lifts up to 0.02; the sheets' far borders stay 0.07 apart
+  RemeshedSurface kept = given, lifted = given;
+  clean_up(kept, input, projector, without);
+  const CleanupReport report = clean_up(lifted, input, projector, with);
+  const double plain = forced_wedge_dihedral(kept, 0, 1), after = forced_wedge_dihedral(lifted, 0, 1);
+  EXPECT_LT(plain, 4.5);
+  EXPECT_GT(report.wedge_moves, 0);
+  EXPECT_GT(after, 5.0);
+  EXPECT_EQ(report.intersections_left + report.holes_left + report.leaks_left + report.folds_left, 0);
+  // The apexes left their sheets by at most d_min / 2 (those on both sides move apart).
+  double farthest = 0.0;
+  for (size_t t = 0; t < lifted.triangles.size(); ++t)
+    for (int v : lifted.triangles[t])
+      farthest = std::max(farthest, projector.distance_to_part(lifted.triangle_part[t], lifted.vertices[v]));
+  EXPECT_GT(farthest, 1e-3);
+  EXPECT_LE(farthest, 0.5 * with.min_feature + 1e-12);
+}
+
 // A horizon (z = 0, unit square) and a fault dipping at 60 deg that rests on it along
 // x in [0, 0.5] (a contact) and then rises off it at `angle_deg` to x = 1: its free border
 // (the fault tip) runs a little above the horizon.
