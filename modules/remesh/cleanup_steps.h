@@ -257,9 +257,9 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg);
 
 // Moves the vertices of wedge tets flatter than `bound_deg` (their edge's and apexes') to where
 // the flattest wedge tet around them is least flat, among the candidates of angle_target(),
-// when their triangles keep a smallest angle of min(theirs, 20°). Where the wedge itself is
-// thinner than the bound, an apex on a part may leave it by up to `max_lift` (0: never), away
-// from the other side. Each move is checked on its own.
+// when their triangles keep a smallest angle of min(theirs, 20°). Where that is not enough (the
+// wedge itself thinner than the bound, or staggered apexes), an apex on a part may leave it by up
+// to `max_lift` (0: never), away from the other side. Each move is checked on its own.
 int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_deg, double max_lift);
 
 // ---- fidelity (cleanup_fidelity.cpp) ----

@@ -82,8 +82,8 @@ double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
 int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_deg, double max_lift) {
   std::vector<int> wanted;
   std::vector<std::pair<int, int>> apexes;
-  // Wedges themselves thinner than the bound: {apex, a, b, other apex}, for the lifts below.
-  std::vector<std::array<int, 4>> thin;
+  // The wedge tets below the bound by apex, {apex, a, b, other apex}: for the lifts below.
+  std::vector<std::array<int, 4>> lifts;
   for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
     if (!e.alive(static_cast<int>(t))) continue;
     const Triangle f = e.s_.triangles[t];
@@ -95,12 +95,12 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
       for (const auto& [c1, c2] : apexes) {
         if (min_dihedral_angle_deg(e.p(a), e.p(b), e.p(c1), e.p(c2)) >= bound_deg) continue;
         wanted.insert(wanted.end(), {a, b, c1, c2});
-        thin.push_back({c1, a, b, c2});
-        thin.push_back({c2, a, b, c1});
+        lifts.push_back({c1, a, b, c2});
+        lifts.push_back({c2, a, b, c1});
       }
     }
   }
-  std::sort(thin.begin(), thin.end());
+  std::sort(lifts.begin(), lifts.end());
   std::sort(wanted.begin(), wanted.end());
   wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
   int moved = 0;
@@ -131,13 +131,13 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
         for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3}) consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
       }
     }
-    // A wedge thinner than the bound stays that thin whatever slides along the surfaces: an
-    // apex on a part then leaves it, by at most max_lift, away from the other apex's triangle
-    // (modelA6 at 6000 seeds: a zip front stopped where its two sides meet at 2.4 deg; the tet
-    // mesh's minimum is that angle).
+    // A wedge thinner than the bound stays that thin whatever slides along the surfaces (modelA6
+    // at 6000 seeds: a zip front stopped where its two sides meet at 2.4 deg, the tet mesh's
+    // minimum), and staggered apexes sometimes find no better place: an apex on a part then
+    // leaves it, by at most max_lift, away from the other apex's side of the wedge.
     if (f.kind == VertexFeature::Surface && max_lift > 0.0 && best_dihedral < bound_deg) {
-      const auto first = std::lower_bound(thin.begin(), thin.end(), std::array<int, 4>{v, -1, -1, -1});
-      for (auto it = first; it != thin.end() && (*it)[0] == v; ++it) {
+      const auto first = std::lower_bound(lifts.begin(), lifts.end(), std::array<int, 4>{v, -1, -1, -1});
+      for (auto it = first; it != lifts.end() && (*it)[0] == v; ++it) {
         const Vec3 a = e.p((*it)[1]), b = e.p((*it)[2]);
         const Vec3 axis = (b - a).normalized();
         Vec3 n = axis.cross(e.p((*it)[3]) - a);

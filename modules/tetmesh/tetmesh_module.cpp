@@ -65,7 +65,8 @@ class TetmeshModule : public Module {
                          "maximum tet volume in model units^3 (switch a); no bound when absent"};
     volume.min = 0.0;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
-                       "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles (bisected only by --refine-surface-below)"};
+                       "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles "
+                       "(bisected only by --refine-surface-below)"};
     ParameterSpec slivers{"sliver-passes", ParameterType::Int, 4,
                           "extra TetGen runs with interior points added next to the slivers TetGen leaves by the kept "
                           "surface"};

@@ -526,6 +526,10 @@ std::vector<Vec3> sliver_points(const VolumeMesh& mesh, const TriangleTree& surf
   return points;
 }
 
+/// Needle-filled surfaces: more than 0.2 % of the triangles sharper than 1° (raw inputs; see
+/// mesh_with_tetgen).
+bool is_needle_filled(long needles, const StructuralModel& model) { return needles > 0.002 * model.num_triangles(); }
+
 /// Smallest angle of the model's triangles (degrees) and how many are sharper than 1°.
 std::pair<double, long> surface_needles(const StructuralModel& model) {
   double smallest = 180.0;
@@ -642,7 +646,7 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   const auto [smallest_angle, needles] = surface_needles(model);
   info.surface_min_angle_deg = smallest_angle;
   info.surface_needles = needles;
-  const bool needle_filled = needles > 0.002 * model.num_triangles();
+  const bool needle_filled = is_needle_filled(needles, model);
   TetmeshOptions effective = options;
   if (needle_filled) {
     effective.sliver_max_dihedral_deg = 0.0;
@@ -818,8 +822,7 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
 void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log, TetmeshRun& info,
                     ConvertedMesh& best) {
   const double bound = options.refine_surface_below_deg;
-  const bool needle_filled = info.surface_needles > 0.002 * model.num_triangles();  // raw inputs: see mesh_with_tetgen
-  if (!options.keep_surface || !(bound > 0.0) || needle_filled) return;
+  if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
   double best_angle = min_dihedral(best.mesh);
   double seconds = info.plc_seconds + info.tetgen_seconds;  // every round's, kept or not
   std::shared_ptr<const StructuralModel> refined;

@@ -654,6 +654,12 @@ TEST(Tetrahedralize, OptionsOutOfRangeAreParameterErrors) {
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
   o.sliver_max_dihedral_deg = 180;
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.refine_surface_below_deg = -1;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.refine_surface_rounds = 11;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
 }
 
 TEST(TetgenRun, ReturnsCodesAndFillsTheOutput) {
