@@ -412,12 +412,11 @@ double forced_wedge_dihedral(const RemeshedSurface& s, int a, int b) {
   return worst;
 }
 
-TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
-  // Two sheets meeting at a contact (x = 0) at 8 degrees, a pinch-out: a flat one and a tilted
-  // one whose first row of vertices off the contact is shifted along it, so the apexes facing
-  // each other across the wedge are staggered and the tets between them are flat.
-  const int n = 6;
-  const double tilt = std::tan(8.0 * M_PI / 180.0);
+// Two unit sheets on n x n lattices meeting along the contact x = 0: "base" (z = 0) and
+// "onlap", rising at `angle_deg` from it (a pinch-out). With `crossed`, the onlap's quads are
+// split along the other diagonal.
+SurfaceSoup wedge_sheets(int n, double angle_deg, bool crossed) {
+  const double tilt = std::tan(angle_deg * M_PI / 180.0);
   SurfaceSoup soup;
   auto point = [&](int sheet, int i, int j) {
     if (i == 0) return j;  // the contact, shared
@@ -435,17 +434,25 @@ TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
       for (int j = 0; j < n; ++j) {
         const int p00 = point(sheet, i, j), p10 = point(sheet, i + 1, j), p01 = point(sheet, i, j + 1),
                   p11 = point(sheet, i + 1, j + 1);
-        if (sheet == 0) {
-          soup.triangles.push_back({p00, p10, p11});
-          soup.triangles.push_back({p00, p11, p01});
-        } else {
+        if (sheet == 1 && crossed) {
           soup.triangles.push_back({p00, p10, p01});
           soup.triangles.push_back({p10, p11, p01});
+        } else {
+          soup.triangles.push_back({p00, p10, p11});
+          soup.triangles.push_back({p00, p11, p01});
         }
         soup.triangle_group.insert(soup.triangle_group.end(), {sheet, sheet});
       }
   soup.groups = {{"base", "base", SurfaceKind::Horizon, ""}, {"onlap", "onlap", SurfaceKind::Horizon, ""}};
-  const StructuralModel input = build_model(soup);
+  return soup;
+}
+
+TEST(MeshCleanup, OpensTheFlatTetrahedraOfAThinWedge) {
+  // Two sheets meeting at a contact (x = 0) at 8 degrees, a pinch-out: a flat one and a tilted
+  // one whose first row of vertices off the contact is shifted along it, so the apexes facing
+  // each other across the wedge are staggered and the tets between them are flat.
+  const int n = 6;
+  const StructuralModel input = build_model(wedge_sheets(n, 8.0, true));
   ASSERT_EQ(input.parts.size(), 2u);
   const SurfaceProjector projector(input);
   RemeshedSurface given = as_remeshed(input);
@@ -477,28 +484,7 @@ TEST(MeshCleanup, LiftsTheApexesOfAWedgeThinnerThanTheBound) {
   // Two sheets meeting at a contact (x = 0) at 4 degrees: the tet of each contact edge and its
   // two apexes has that angle whatever slides along the sheets. With d_min, the tilted sheet's
   // first row may leave its plane by up to d_min / 2 to open the wedge; without, it may not.
-  const int n = 6;
-  const double tilt = std::tan(4.0 * M_PI / 180.0);
-  SurfaceSoup soup;
-  auto point = [&](int sheet, int i, int j) {
-    if (i == 0) return j;
-    return (n + 1) + ((sheet * n) + (i - 1)) * (n + 1) + j;
-  };
-  for (int j = 0; j <= n; ++j) soup.points.push_back({0, j * 1.0 / n, 0});
-  for (int sheet = 0; sheet < 2; ++sheet)
-    for (int i = 1; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) soup.points.push_back({i * 1.0 / n, j * 1.0 / n, sheet == 0 ? 0.0 : tilt * i / n});
-  for (int sheet = 0; sheet < 2; ++sheet)
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const int p00 = point(sheet, i, j), p10 = point(sheet, i + 1, j), p01 = point(sheet, i, j + 1),
-                  p11 = point(sheet, i + 1, j + 1);
-        soup.triangles.push_back({p00, p10, p11});
-        soup.triangles.push_back({p00, p11, p01});
-        soup.triangle_group.insert(soup.triangle_group.end(), {sheet, sheet});
-      }
-  soup.groups = {{"base", "base", SurfaceKind::Horizon, ""}, {"onlap", "onlap", SurfaceKind::Horizon, ""}};
-  const StructuralModel input = build_model(soup);
+  const StructuralModel input = build_model(wedge_sheets(6, 4.0, false));
   ASSERT_EQ(input.parts.size(), 2u);
   const SurfaceProjector projector(input);
   const RemeshedSurface given = as_remeshed(input);
