@@ -222,8 +222,10 @@ class TetmeshModule : public Module {
       context.log.info("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
                        " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
                        name(run.slivers.layer_surfaces[1]) + " at " + where +
-                       ", thinner there than its triangles are wide: a finer surface mesh there (`remesh "
-                       "--thin-layers`, or a smaller --edge-length) would open them");
+                       ", thinner there than its triangles are wide" +
+                       (run.surface_rounds > 0 ? " even after the surface bisection" : std::string()) +
+                       ": remesh with `--thin-layers --zip-pinch-outs` (finer cells on thin layers, pinch-outs "
+                       "thinner than d_min closed) or a smaller --edge-length");
     }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");
