@@ -78,7 +78,7 @@ class TetmeshModule : public Module {
                            "0: TetGen's own thresholds (165/179)"};
     optimise.min = 0.0;
     optimise.max = 179.9;
-    ParameterSpec refine{"refine-surface-below", ParameterType::Double, 5.0,
+    ParameterSpec refine{"refine-surface-below", ParameterType::Double, 6.0,
                          "bisect the surface edges under tets flatter than this (degrees) that no interior point "
                          "opens (a layer thinner than its triangles) and mesh again: same surfaces, finer "
                          "triangles there; 0 keeps the surface triangles exactly"};

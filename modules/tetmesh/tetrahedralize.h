@@ -57,7 +57,7 @@ struct TetmeshOptions {
   /// vertices on the layer's two sides, angles of about 1.4 × thickness / edge radians, halved
   /// edges double them. The output triangles are then the finer ones (TetmeshRun::refined_model);
   /// 0 keeps the model's triangles exactly.
-  double refine_surface_below_deg = 5.0;
+  double refine_surface_below_deg = 6.0;
   /// At most this many bisection rounds (each one halves the edges it splits).
   int refine_surface_rounds = 4;
   /// TetGen runs with different facet orders when one crashes (a failed assertion), fails
@@ -166,7 +166,11 @@ struct TetmeshRun {
 /// attribute, next to Steiner points it added while recovering the surfaces; they get the
 /// region of their neighbours across non-surface faces), every region has tets, every output
 /// triangle is a tet face.
-/// With keep_surface every model triangle is an output triangle except where TetGen could not
+/// Surface bisection (options.refine_surface_below_deg): tets flatter than that bound left by the
+/// passes and not in a wedge get the surface edges under them bisected, and TetGen runs again
+/// (see there); run->refined_model is then the model TetGen meshed.
+/// With keep_surface every model triangle (of run->refined_model when bisection rounds were kept:
+/// the same surfaces, finer triangles) is an output triangle except where TetGen could not
 /// recover an edge without splitting it (reported in TetmeshRun::split_facets and a warning;
 /// seen on raw inputs with needle triangles only).
 ///
