@@ -7,6 +7,7 @@
 #include <fstream>
 #include <unordered_set>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 
 namespace voroseal {
@@ -30,11 +31,6 @@ std::array<uint8_t, 3> hsv_to_rgb(double h, double s, double v) {
   }
   auto byte = [](double c) { return static_cast<uint8_t>(std::clamp(std::lround(255.0 * c), 0L, 255L)); };
   return {byte(r), byte(g), byte(b)};
-}
-
-uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
 }
 
 // One triangle ready for rasterisation, in supersampled pixel coordinates. `depth` is affine in

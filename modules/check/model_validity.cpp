@@ -12,6 +12,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 #include "framework/core/union_find.h"
 #include "framework/geometry/self_intersections.h"
@@ -61,12 +62,6 @@ std::string join(const std::vector<std::string>& names, size_t max = 8) {
   return s;
 }
 
-uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
-}
-int key_a(uint64_t k) { return static_cast<int>(k >> 32); }
-int key_b(uint64_t k) { return static_cast<int>(k & 0xffffffffu); }
 
 // Undirected edges of the flattened triangles with their incident triangles (CSR).
 struct EdgeIncidence {
@@ -163,7 +158,7 @@ class ValidityChecker {
   bool room(const CheckEntry& e) const { return static_cast<int>(e.examples.size()) < o_.max_examples; }
   Vec3 file(const Vec3& local) const { return local + m_.frame.origin; }
   const std::string& part_name(int p) const { return m_.parts[p].name; }
-  Vec3 midpoint(uint64_t key) const { return 0.5 * (m_.vertices[key_a(key)] + m_.vertices[key_b(key)]); }
+  Vec3 midpoint(uint64_t key) const { return 0.5 * (m_.vertices[edge_key_first(key)] + m_.vertices[edge_key_second(key)]); }
   Vec3 centroid(int f) const {
     const Triangle& t = t_.triangles[f];
     return (m_.vertices[t[0]] + m_.vertices[t[1]] + m_.vertices[t[2]]) / 3.0;
@@ -176,7 +171,7 @@ class ValidityChecker {
     return names;
   }
   std::string edge_text(uint64_t key) const {
-    return "edge " + std::to_string(key_a(key)) + "-" + std::to_string(key_b(key));
+    return "edge " + std::to_string(edge_key_first(key)) + "-" + std::to_string(edge_key_second(key));
   }
   void add_edge_example(CheckEntry& c, size_t e, const std::string& what) {
     if (room(c))
@@ -535,7 +530,7 @@ class ValidityChecker {
     std::vector<long> first_bad(nr + 1, -1);
     std::vector<std::pair<int, int>> sums;  // (region, signed count) at one edge
     for (size_t e = 0; e < edges_->size(); ++e) {
-      const int a = key_a(edges_->keys[e]), b = key_b(edges_->keys[e]);
+      const int a = edge_key_first(edges_->keys[e]), b = edge_key_second(edges_->keys[e]);
       sums.clear();
       for (int i = edges_->start[e]; i < edges_->start[e + 1]; ++i) {
         const int f = edges_->tri[i];
@@ -795,7 +790,7 @@ class ValidityChecker {
     double shortest = std::numeric_limits<double>::infinity();
     std::vector<std::pair<double, size_t>> bad;
     for (size_t e = 0; e < edges_->size(); ++e) {
-      const double l = (m_.vertices[key_a(edges_->keys[e])] - m_.vertices[key_b(edges_->keys[e])]).norm();
+      const double l = (m_.vertices[edge_key_first(edges_->keys[e])] - m_.vertices[edge_key_second(edges_->keys[e])]).norm();
       shortest = std::min(shortest, l);
       if (l < min_length) bad.emplace_back(l, e);
     }

@@ -6,6 +6,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 
 namespace voroseal {
@@ -21,11 +22,6 @@ std::uint64_t spread_bits(std::uint64_t x) {
   x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
   x = (x | x << 2) & 0x1249249249249249ULL;
   return x;
-}
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
 }  // namespace

@@ -4,16 +4,9 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "framework/core/edge_key.h"
+
 namespace voroseal {
-
-namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
-}  // namespace
 
 std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
                                           const StructuralModel& output, const std::vector<int>& input_part_of_output,

@@ -4,18 +4,14 @@
 #include <unordered_map>
 #include <utility>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 
 namespace voroseal {
 
 namespace {
 
-using EdgeKey = std::uint64_t;
-
-EdgeKey edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<EdgeKey>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
+using EdgeKey = std::uint64_t;  // see edge_key()
 
 /// The parts' triangles as plain lists while they are split, and which triangles hold each model
 /// edge (several parts share the edges of a contact: all of them are split together).
@@ -46,7 +42,7 @@ class Bisector {
       for (const auto& [p, f] : it->second) {
         const EdgeKey longest = longest_edge(p, f);
         if (longest == key) continue;
-        split(static_cast<int>(longest >> 32), static_cast<int>(longest & 0xffffffffu));
+        split(edge_key_first(longest), edge_key_second(longest));
         bisectable = false;
         break;
       }
@@ -110,8 +106,7 @@ class Bisector {
     double best_length = -1.0;
     for (int k = 0; k < 3; ++k) {
       const EdgeKey key = model_edge(p, f, k);
-      const double length =
-          (model_.vertices[static_cast<int>(key >> 32)] - model_.vertices[static_cast<int>(key & 0xffffffffu)]).squaredNorm();
+      const double length = (model_.vertices[edge_key_first(key)] - model_.vertices[edge_key_second(key)]).squaredNorm();
       if (length > best_length || (length == best_length && key > best)) {
         best = key;
         best_length = length;
@@ -130,7 +125,7 @@ class Bisector {
   void bisect(int p, int f, int a, int b, int m) {
     std::array<int, 3> t = faces_[p][f];
     int k = 0;
-    while (edge_key(model_vertex(p, t[k]), model_vertex(p, t[(k + 1) % 3])) != edge_key(a, b)) ++k;
+    while (model_edge(p, f, k) != edge_key(a, b)) ++k;
     const int u = t[k], v = t[(k + 1) % 3], w = t[(k + 2) % 3];
     // One local midpoint per local edge: a part touching itself at a vertex holds the vertex
     // (and maybe the edge) twice.

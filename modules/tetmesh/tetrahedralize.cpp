@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 #include "modules/tetmesh/surface_bisection.h"
 #include "modules/tetmesh/tetgen_plc.h"
@@ -782,13 +783,13 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
                                                       double bound_deg) {
   const ModelTriangles flat = flatten(model);
   const std::vector<int> vertex_of_point = plc_vertices(flat, model.vertices.size());
-  std::unordered_set<Key, KeyHash> surface_edges;
+  std::unordered_set<std::uint64_t> surface_edges;
   // Per model vertex: its longest surface edge (squared length, other end).
   std::vector<std::pair<double, int>> longest(model.vertices.size(), {-1.0, -1});
   for (const Triangle& t : flat.triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      surface_edges.insert(sorted_key(a, b, -1));
+      surface_edges.insert(edge_key(a, b));
       const double length = (model.vertices[a] - model.vertices[b]).squaredNorm();
       if (length > longest[a].first) longest[a] = {length, b};
       if (length > longest[b].first) longest[b] = {length, a};
@@ -805,7 +806,7 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
     bool own = false;
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
-        if (v[a] >= 0 && v[b] >= 0 && surface_edges.count(sorted_key(v[a], v[b], -1))) {
+        if (v[a] >= 0 && v[b] >= 0 && surface_edges.count(edge_key(v[a], v[b]))) {
           add(v[a], v[b]);
           own = true;
         }
