@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "framework/core/error.h"
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
 #include "tests/support/module_harness.h"
@@ -34,6 +35,28 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
   ASSERT_EQ(report.at("regions").size(), 2u);
   EXPECT_NEAR(report.at("regions")[0].at("enclosed_volume").get<double>(), 0.5, 1e-12);
   EXPECT_FALSE(report.contains("output"));
+}
+
+TEST(TetmeshModule, ReportsTheSurfaceBisectionAndRejectsItsBadOptions) {
+  // A layer 0.02 thick under 0.125 triangles: the report counts the bisected edges and checks
+  // conformity against the triangles TetGen got; options out of range are parameter errors.
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
+  context.model = std::make_shared<StructuralModel>(build_model(test::thin_layer_box(8, 0.02)));
+  module.run(context, Parameters(module.parameters(), {}));
+  const auto& report = context.report.at("tetmesh");
+  EXPECT_GE(report.at("surface_bisection").at("rounds").get<int>(), 1);
+  EXPECT_GT(report.at("surface_bisection").at("edges").get<int>(), 0);
+  EXPECT_GT(report.at("surface_bisection").at("triangles").get<int>(), context.model->num_triangles());
+  EXPECT_EQ(report.at("nonconforming_triangles"), 0);
+  EXPECT_LT(report.at("max_relative_volume_error").get<double>(), 1e-6);
+  module.run(context, Parameters(module.parameters(), {{"refine-surface-below", 0.0}}));
+  EXPECT_EQ(context.report.at("tetmesh").at("surface_bisection").at("edges"), 0);
+  EXPECT_EQ(context.report.at("tetmesh").at("surface_bisection").at("triangles"), context.model->num_triangles());
+  EXPECT_THROW(module.run(context, Parameters(module.parameters(), {{"refine-surface-below", -1.0}})),
+               ParameterError);
+  EXPECT_THROW(module.run(context, Parameters(module.parameters(), {{"refine-surface-rounds", 11}})), ParameterError);
 }
 
 TEST(TetmeshModule, NoTetIsFlatterThanTheThinnestWedgeItReports) {
