@@ -161,8 +161,32 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
                                const RemeshOptions& options, Logger& log) {
   RemeshResult result;
   result.seeds = std::move(seeds);
-
+  CleanupOptions cleanup = options.cleanup;
   auto t0 = std::chrono::steady_clock::now();
+  {
+    // d_min from the resolution asked for; the refinement splits every cell whose pieces are
+    // farther apart than that (all of them with keep_topology) before the mesh is built.
+    const double h0 = result.seeds.edge_length > 0.0
+                          ? result.seeds.edge_length
+                          : edge_length_for_seeds(ModelGeometry(input, result.seeds.vertex_density).root_mass(),
+                                                  static_cast<int>(result.seeds.seeds.size()));
+    if (options.keep_topology) cleanup.min_feature = 0.0;
+    if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h0;
+    BallRefinementOptions refine = options.refinement;
+    refine.min_feature = cleanup.min_feature;
+    refine.threads = options.seeds.threads;
+    if (options.keep_topology) {
+      refine.max_rounds = std::max(refine.max_rounds, kKeepTopologyRounds);
+      refine.min_size = h0 / kKeepTopologyRefinement;
+    } else {
+      refine.min_size = std::max(refine.min_size, cleanup.min_feature);
+    }
+    Progress quiet(false);
+    result.refinement = refine_until_ball_property(input, result.seeds, options.seeds, refine, log, quiet);
+  }
+  result.refinement_seconds = seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
   const ModelGeometry geometry(
       input, result.seeds.vertex_density.empty() ? options.seeds.vertex_density : result.seeds.vertex_density);
   RvdOptions rvd_options;
@@ -176,8 +200,6 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   const double h = edge_length_for_seeds(geometry.root_mass(), static_cast<int>(result.seeds.seeds.size()));
   MeshBuildOptions build = options.build;
   if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
-  CleanupOptions cleanup = options.cleanup;
-  if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h;
   if (cleanup.fidelity_tolerance < 0.0) cleanup.fidelity_tolerance = -cleanup.fidelity_tolerance * h;
   result.min_feature = cleanup.min_feature;
   result.build = build_remeshed_surface(input, geometry, rvd, projector, build);

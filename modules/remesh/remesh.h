@@ -13,6 +13,7 @@
 
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
+#include "modules/remesh/ball_refinement.h"
 #include "modules/remesh/feature_audit.h"
 #include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
@@ -36,7 +37,18 @@ struct RemeshOptions {
   /// length of the remesh: -0.15 means 0.15 h.
   CleanupOptions cleanup;
   bool clean_up = true;
+  /// Refinement until the topological ball property holds (ball_refinement.h) before the mesh
+  /// is built; its min_feature is set from cleanup.min_feature. max_rounds 0 only measures.
+  BallRefinementOptions refinement;
+  /// No merge at all (--keep-topology): d_min 0, and the refinement goes on until every failure
+  /// is resolved or its cells would be smaller than the edge length / kKeepTopologyRefinement.
+  bool keep_topology = false;
 };
+
+/// With --keep-topology: cells at most this many times smaller than the asked edge length, and
+/// this many refinement rounds (each halves the cells around a failure).
+constexpr double kKeepTopologyRefinement = 32.0;
+constexpr int kKeepTopologyRounds = 8;
 
 /// Counts of the model's features before and after remeshing.
 struct FeatureCounts {
@@ -73,8 +85,9 @@ struct RemeshResult {
   MeshBuildResult build;            // surface left empty (it is `model`)
   CleanupReport cleanup;
   TopologyReport topology;
+  BallRefinementResult refinement;  // seeds added where the topological ball property failed
   double min_feature = 0.0;         // d_min used
-  double rvd_seconds = 0.0, build_seconds = 0.0, cleanup_seconds = 0.0;
+  double refinement_seconds = 0.0, rvd_seconds = 0.0, build_seconds = 0.0, cleanup_seconds = 0.0;
 };
 
 /// Remeshes `input`. \throws ParameterError, ModelError (empty model), MesherError (the output

@@ -113,6 +113,13 @@ class RemeshModule final : public Module {
     p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
                      "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
                      0.1, 90.0));
+    p.push_back(spec("refine-rounds", ParameterType::Int, BallRefinementOptions{}.max_rounds,
+                     "rounds of refinement where a restricted Voronoi cell fails the topological ball "
+                     "property by more than d_min (0: none, the failures are only counted)",
+                     0, 20));
+    p.push_back(spec("keep-topology", ParameterType::Bool, false,
+                     "merge nothing: refine until every surface part, contact, corner and region of the "
+                     "input has its counterpart (d_min 0)"));
     p.push_back(spec("cleanup", ParameterType::Bool, true, "clean the dual mesh up: valence-3 vertices, needles, flips, smoothing, repairs (--no-cleanup keeps the raw dual mesh)"));
     p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
                      "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
@@ -149,6 +156,8 @@ class RemeshModule final : public Module {
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
     remesh_options.clean_up = parameters.get_bool("cleanup");
+    remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
+    remesh_options.keep_topology = parameters.get_bool("keep-topology");
     if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
     SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
     // The seeds are written before mesh building, so that they are there whatever happens next.
@@ -180,6 +189,7 @@ class RemeshModule final : public Module {
                                {"thinnest", std::isfinite(r.thinnest_layer) ? nlohmann::json(r.thinnest_layer)
                                                                             : nlohmann::json()},
                                {"edge_length", r.edge_length}};
+    report["refinement"] = refinement_json(result.refinement);
     report["optimizer"] = to_string(options.optimizer.kind);
     report["alpha"] = r.alpha;
     report["iterations"] = r.run.history.empty() ? 0 : r.run.history.back().iteration;
@@ -187,6 +197,7 @@ class RemeshModule final : public Module {
     report["stop_reason"] = r.run.stop_reason;
     report["history"] = std::move(history);
     report["timings"] = {{"sampling_s", r.sampling_seconds},
+                         {"refinement_s", result.refinement_seconds},
                          {"optimization_s", r.optimization_seconds},
                          {"rvd_s", result.rvd_seconds},
                          {"mesh_building_s", result.build_seconds},
@@ -269,6 +280,25 @@ class RemeshModule final : public Module {
   }
 
  private:
+  static nlohmann::json refinement_json(const BallRefinementResult& refinement) {
+    nlohmann::json rounds = nlohmann::json::array();
+    for (const BallRefinementRound& r : refinement.rounds)
+      rounds.push_back({{"failures", r.total()},
+                        {"holes", r.failures[BallViolation::NotADisk]},
+                        {"part_pieces", r.failures[BallViolation::PartPieces]},
+                        {"contact_pieces", r.failures[BallViolation::ContactPieces]},
+                        {"corners", r.failures[BallViolation::Corners]},
+                        {"unlinked", r.failures[BallViolation::Unlinked]},
+                        {"below_min_feature", r.merges},
+                        {"below_min_size", r.unrefinable},
+                        {"refined", r.refined},
+                        {"seeds_added", r.seeds_added},
+                        {"seconds", r.seconds}});
+    return {{"seeds_added", refinement.seeds_added},
+            {"rounds", std::move(rounds)},
+            {"merges_left", refinement.merges_left},
+            {"failures_left", refinement.failures_left}};
+  }
   static nlohmann::json features_json(const std::vector<VertexFeature>& features) {
     nlohmann::json list = nlohmann::json::array();
     for (const VertexFeature& f : features) list.push_back({{"kind", feature_kind(f.kind)}, {"id", f.id}});
