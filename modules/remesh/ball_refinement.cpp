@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <set>
 
 #include "modules/remesh/point_cloud.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
@@ -21,6 +22,7 @@ int BallRefinementRound::total() const {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr size_t kFailuresLogged = 50;  // failures left listed in the debug log
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
@@ -118,6 +120,12 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
   if (!base_density.empty())
     for (size_t v = 0; v < nv; ++v)
       base_size[v] = h / std::pow(std::max(base_density[v], 1e-300), 0.25);
+  // Pairs of parts that meet along a contact somewhere (a, b with a < b).
+  std::set<std::pair<int, int>> meeting;
+  for (const Contact& c : model.contacts)
+    for (size_t i = 0; i < c.parts.size(); ++i)
+      for (size_t j = i + 1; j < c.parts.size(); ++j) meeting.insert({c.parts[i], c.parts[j]});
+  auto meet = [&](int a, int b) { return meeting.count({std::min(a, b), std::max(a, b)}) > 0; };
   RvdOptions rvd_options;
   rvd_options.threads = refine.threads;
   char line[300];
@@ -134,6 +142,10 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
         ++r.merges;
         continue;
       }
+      if (f.kind == BallViolation::Unlinked && meet(f.part, f.other_part)) {
+        ++r.wedges;
+        continue;
+      }
       if (f.cell_size <= refine.min_size) {
         ++r.unrefinable;
         continue;
@@ -144,15 +156,26 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
     const bool last = spots.empty() || round >= refine.max_rounds;
     if (last) {
       result.merges_left = r.merges;
-      result.failures_left = r.total() - r.merges;
-      result.left = std::move(failures);
+      result.wedges_left = r.wedges;
+      result.failures_left = r.total() - r.merges - r.wedges;
       r.seconds = since(t0);
       result.rounds.push_back(r);
       std::snprintf(
           line, sizeof line,
-          "remesh: topological ball: %d failures left (%d closer than d_min, merged on purpose)",
-          r.total(), r.merges);
+          "remesh: topological ball: %d failures left (%d closer than d_min, merged on purpose, "
+          "%d in thin wedges)",
+          r.total(), r.merges, r.wedges);
       log.info(line);
+      for (size_t k = 0; k < failures.size() && k < kFailuresLogged; ++k) {
+        const BallViolation& f = failures[k];
+        const Vec3 x = f.where + model.frame.origin;
+        std::snprintf(
+            line, sizeof line,
+            "remesh: ball failure left: %s at (%.10g, %.10g, %.10g), %.4g apart, cell %.4g",
+            to_string(f.kind), x.x(), x.y(), x.z(), f.separation, f.cell_size);
+        log.debug(line);
+      }
+      result.left = std::move(failures);
       break;
     }
     r.refined = static_cast<int>(spots.size());

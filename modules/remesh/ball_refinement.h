@@ -33,6 +33,9 @@ struct BallRefinementRound {
   std::array<int, 5> failures{};  // by BallViolation::Kind
   int refined = 0;                // failures refined this round
   int merges = 0;                 // failures closer than d_min, left to the merges
+  /// Unlinked pieces of two surfaces that meet along a contact outside the cell: a thin wedge,
+  /// where smaller cells only move the failure closer to the contact; left to the mesh building.
+  int wedges = 0;
   int unrefinable = 0;            // failures whose cell is already no larger than min_size
   int seeds_added = 0;
   double seconds = 0.0;
@@ -44,6 +47,7 @@ struct BallRefinementResult {
   int seeds_added = 0;
   /// Failures of the final seeds: merges on purpose (closer than d_min) and the rest.
   int merges_left = 0;
+  int wedges_left = 0;
   int failures_left = 0;
   std::vector<BallViolation> left;  // the failures of the final seeds
 };

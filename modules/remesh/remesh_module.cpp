@@ -117,6 +117,8 @@ class RemeshModule final : public Module {
                      "rounds of refinement where a restricted Voronoi cell fails the topological ball "
                      "property by more than d_min (0: none, the failures are only counted)",
                      0, 20));
+    p.push_back(spec("refine-iterations", ParameterType::Int, BallRefinementOptions{}.iterations,
+                     "optimiser iterations after each refinement round", 0, 1e6));
     p.push_back(spec("keep-topology", ParameterType::Bool, false,
                      "merge nothing: refine until every surface part, contact, corner and region of the "
                      "input has its counterpart (d_min 0)"));
@@ -158,6 +160,7 @@ class RemeshModule final : public Module {
     remesh_options.clean_up = parameters.get_bool("cleanup");
     remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
+    remesh_options.refinement.iterations = static_cast<int>(parameters.get_int("refine-iterations"));
     if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
     SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
     // The seeds are written before mesh building, so that they are there whatever happens next.
@@ -290,6 +293,7 @@ class RemeshModule final : public Module {
                         {"corners", r.failures[BallViolation::Corners]},
                         {"unlinked", r.failures[BallViolation::Unlinked]},
                         {"below_min_feature", r.merges},
+                        {"wedges", r.wedges},
                         {"below_min_size", r.unrefinable},
                         {"refined", r.refined},
                         {"seeds_added", r.seeds_added},
@@ -297,6 +301,7 @@ class RemeshModule final : public Module {
     return {{"seeds_added", refinement.seeds_added},
             {"rounds", std::move(rounds)},
             {"merges_left", refinement.merges_left},
+            {"wedges_left", refinement.wedges_left},
             {"failures_left", refinement.failures_left}};
   }
   static nlohmann::json features_json(const std::vector<VertexFeature>& features) {

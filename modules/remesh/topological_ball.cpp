@@ -203,6 +203,8 @@ class CellChecker {
         if (linked.find(m) == root && s.pieces[m].area > s.pieces[largest].area) largest = m;
       BallViolation v = base;
       v.kind = BallViolation::Unlinked;
+      v.part = s.pieces[largest].part;
+      v.other_part = s.pieces[main_component].part;
       v.where = polygon_centroid(rvd_, s.pieces[largest].largest_polygon);
       v.separation = distance_between(p0, p1, c0, linked, root, main_root);
       out.push_back(v);

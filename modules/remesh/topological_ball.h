@@ -35,6 +35,9 @@ struct BallViolation {
   /// dual would merge); +inf for a hole.
   double separation = 0.0;
   double cell_size = 0.0;  // edge length of the dual around this cell: sqrt(area / (√3/2))
+  /// Unlinked: the surface parts of the largest offending piece and of the cell's largest
+  /// piece (-1 for the other kinds).
+  int part = -1, other_part = -1;
 };
 
 const char* to_string(BallViolation::Kind kind);
