@@ -8,6 +8,7 @@
 #include <map>
 
 #include "framework/core/error.h"
+#include "framework/core/signal_cleanup.h"
 #include "framework/host/pipeline.h"
 #include "framework/host/plugin_loader.h"
 #include "framework/host/runner.h"
@@ -113,6 +114,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
                "Every subcommand below is a module; `voroseal modules` lists their parameters."};
   app.require_subcommand(1);
   app.set_version_flag("--version", kVersion);
+  install_signal_cleanup();
   int threads = 0;
   bool quiet = false, verbose = false;
   app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
