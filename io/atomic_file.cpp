@@ -120,7 +120,8 @@ void AtomicFile::close() {
 }
 
 bool AtomicFile::link_unnamed(const std::string& name) const {
-  return ::linkat(AT_FDCWD, fd_path(unnamed_fd_).c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0;
+  return ::linkat(AT_FDCWD, fd_path(unnamed_fd_).c_str(), AT_FDCWD, name.c_str(),
+                  AT_SYMLINK_FOLLOW) == 0;
 }
 
 void AtomicFile::commit() {
@@ -139,12 +140,14 @@ void AtomicFile::commit() {
       }
       const fs::path t(target_);
       for (int attempt = 0; attempt < 100 && from.empty(); ++attempt) {
-        const std::string name = (fs::path(directory_) / ("." + t.filename().string() + ".tmp-" +
-                                                          std::to_string(::getpid()) + "-" +
-                                                          std::to_string(attempt)))
-                                     .string();
-        if (link_unnamed(name)) from = name;
-        else if (errno != EEXIST) break;
+        const std::string name =
+            (fs::path(directory_) / ("." + t.filename().string() + ".tmp-" +
+                                     std::to_string(::getpid()) + "-" + std::to_string(attempt)))
+                .string();
+        if (link_unnamed(name))
+          from = name;
+        else if (errno != EEXIST)
+          break;
       }
       if (from.empty() || std::rename(from.c_str(), target_.c_str()) != 0) {
         const std::string why = std::strerror(errno);

@@ -230,8 +230,8 @@ SurfaceSoup read_model3d(const TextSource& source) {
           tf.has_key && !patch.empty() ? key_orientation(body.points, patch, tf.key, tol) : 1;
       if (orientation == 0)
         in.fail_at(tf.key_line, "the key triangle of TFACE " + std::to_string(tf.number) +
-                                    " is no triangle of TSurf '" + tsurf_names[s] + "' (its TFACE " +
-                                    std::to_string(k + 1) + ")");
+                                    " is no triangle of TSurf '" + tsurf_names[s] +
+                                    "' (its TFACE " + std::to_string(k + 1) + ")");
       if (orientation < 0)
         for (Triangle& t : patch) std::swap(t[1], t[2]);
       const int g = group_of_tface[list[k]];

@@ -26,12 +26,14 @@ std::string quoted(std::string_view token) {
 
 TextSource load_text(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a model file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a model file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open file");
   // One allocation of the file's size where it has one (not a pipe), not a growing buffer.
   TextSource source{path, {}};
-  const std::uintmax_t size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  const std::uintmax_t size =
+      std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
   if (!ec && size > 0) {
     source.text.resize(static_cast<size_t>(size));
     in.read(source.text.data(), static_cast<std::streamsize>(size));

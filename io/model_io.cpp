@@ -43,7 +43,8 @@ namespace {
 
 void require_readable_extension(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a model file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a model file");
   const std::string ext = extension(path);
   const auto& readable = readable_model_extensions();
   if (std::find(readable.begin(), readable.end(), ext) == readable.end())
@@ -61,7 +62,8 @@ SurfaceSoup read_soup_source(const TextSource& source) {
 }
 
 // The writer of a model format, chosen by the extension of `path`. \throws OutputError
-std::function<void(std::ostream&)> model_writer(const StructuralModel& model, const std::string& path,
+std::function<void(std::ostream&)> model_writer(const StructuralModel& model,
+                                                const std::string& path,
                                                 const WriteOptions& options) {
   const std::string ext = extension(path);
   const int precision = options.precision;
@@ -95,16 +97,19 @@ StructuralModel read_model(const std::string& path, const ReadOptions& options) 
   return build_model(read_soup(path), options.build);
 }
 
-StructuralModel read_model_text(std::string text, const std::string& path, const ReadOptions& options) {
+StructuralModel read_model_text(std::string text, const std::string& path,
+                                const ReadOptions& options) {
   require_readable_extension(path);
   return build_model(read_soup_source(TextSource{path, std::move(text)}), options.build);
 }
 
-void write_model(const StructuralModel& model, const std::string& path, const WriteOptions& options) {
+void write_model(const StructuralModel& model, const std::string& path,
+                 const WriteOptions& options) {
   write_atomically(path, options.protected_paths, model_writer(model, path, options));
 }
 
-std::string model_text(const StructuralModel& model, const std::string& path, const WriteOptions& options) {
+std::string model_text(const StructuralModel& model, const std::string& path,
+                       const WriteOptions& options) {
   std::ostringstream out;
   model_writer(model, path, options)(out);
   return out.str();
@@ -116,7 +121,8 @@ void write_text(const std::string& text, const std::string& path, const WriteOpt
 
 VolumeMesh read_volume_mesh(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a volume mesh");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a volume mesh");
   const std::string ext = extension(path);
   if (ext == ".mesh") return read_medit_volume(load_text(path));
   if (ext == ".vtu") return read_vtu_volume(load_text(path));

@@ -35,7 +35,8 @@ int max_threads() {
 std::string range_text(const ParameterSpec& spec) {
   if (spec.type != ParameterType::Int && spec.type != ParameterType::Double) return "";
   auto number = [&](double v) {
-    if (spec.type == ParameterType::Int && std::abs(v) < 9.0e15) return std::to_string(static_cast<long long>(v));
+    if (spec.type == ParameterType::Int && std::abs(v) < 9.0e15)
+      return std::to_string(static_cast<long long>(v));
     return nlohmann::json(v).dump();
   };
   return number(spec.min) + " to " + number(spec.max);
@@ -190,8 +191,9 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
       c.app->add_option("--feature-angle", feature_angle,
                         "split a surface where it folds more than this (degrees); for soups without groups")
           ->check(CLI::Range(0.0, 180.0));
-      c.app->add_option("--weld-tolerance", weld_tolerance,
-                        "welding distance relative to the bbox diagonal (0 to 0.1)")
+      c.app
+          ->add_option("--weld-tolerance", weld_tolerance,
+                       "welding distance relative to the bbox diagonal (0 to 0.1)")
           ->check(CLI::Range(0.0, 0.1));
       c.app->add_option("--corner-rule", corner_rule,
                         "incidence (RINGMesh: a corner where the set of touching surfaces changes, one per "

@@ -99,6 +99,8 @@ SignalBlock::SignalBlock() {
   ::pthread_sigmask(SIG_BLOCK, &block, reinterpret_cast<sigset_t*>(saved_));
 }
 
-SignalBlock::~SignalBlock() { ::pthread_sigmask(SIG_SETMASK, reinterpret_cast<sigset_t*>(saved_), nullptr); }
+SignalBlock::~SignalBlock() {
+  ::pthread_sigmask(SIG_SETMASK, reinterpret_cast<sigset_t*>(saved_), nullptr);
+}
 
 }  // namespace voroseal

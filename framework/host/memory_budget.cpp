@@ -31,17 +31,26 @@ double parse_memory_size(const std::string& text) {
   double unit = 1.0;
   if (used > 0 && used + 1 == text.size()) {
     switch (std::tolower(static_cast<unsigned char>(text.back()))) {
-      case 'k': unit = 1024.0; break;
-      case 'm': unit = 1024.0 * 1024.0; break;
-      case 'g': unit = 1024.0 * 1024.0 * 1024.0; break;
-      case 't': unit = 1024.0 * 1024.0 * 1024.0 * 1024.0; break;
-      default: used = 0;
+      case 'k':
+        unit = 1024.0;
+        break;
+      case 'm':
+        unit = 1024.0 * 1024.0;
+        break;
+      case 'g':
+        unit = 1024.0 * 1024.0 * 1024.0;
+        break;
+      case 't':
+        unit = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+        break;
+      default:
+        used = 0;
     }
     if (used > 0) ++used;
   }
   if (used == 0 || used != text.size() || !std::isfinite(value) || !(value > 0.0))
-    throw ParameterError("--max-memory: expected a positive size such as 4G, 512M or 1000000, got '" + text +
-                         "'");
+    throw ParameterError(
+        "--max-memory: expected a positive size such as 4G, 512M or 1000000, got '" + text + "'");
   return value * unit;
 }
 
@@ -58,9 +67,10 @@ void require_memory(const Context& context, double bytes, const std::string& wha
   const double budget = memory_budget_bytes(context);
   if (budget <= 0.0 || !(bytes > budget)) return;
   const bool machine = !(context.max_memory_bytes > 0.0);
-  throw ParameterError(what + " needs about " + memory_text(bytes) + " of memory, more than " +
-                       (machine ? "this machine has (" + memory_text(budget) + "; --max-memory SIZE allows more)"
-                                : "--max-memory (" + memory_text(budget) + ")"));
+  throw ParameterError(
+      what + " needs about " + memory_text(bytes) + " of memory, more than " +
+      (machine ? "this machine has (" + memory_text(budget) + "; --max-memory SIZE allows more)"
+               : "--max-memory (" + memory_text(budget) + ")"));
 }
 
 }  // namespace voroseal

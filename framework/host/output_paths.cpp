@@ -17,7 +17,8 @@ namespace {
 
 std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -28,7 +29,8 @@ std::vector<fs::path> files_of(const std::string& path) {
   const std::string ext = lower_extension(p);
   if (ext != ".node" && ext != ".ele" && ext != ".face") return {p};
   std::vector<fs::path> triple;
-  for (const char* e : {".node", ".ele", ".face"}) triple.push_back(fs::path(p).replace_extension(e));
+  for (const char* e : {".node", ".ele", ".face"})
+    triple.push_back(fs::path(p).replace_extension(e));
   return triple;
 }
 
@@ -68,7 +70,8 @@ void check_output_paths(const std::vector<ParameterSpec>& specs, const Parameter
       throw ParameterError(where + ": unknown extension '" + ext + "' (supported: " + list + ")");
     }
     const fs::path parent = fs::absolute(path, ec).parent_path();
-    if (!fs::is_directory(parent, ec)) throw ParameterError(where + ": no directory " + parent.string());
+    if (!fs::is_directory(parent, ec))
+      throw ParameterError(where + ": no directory " + parent.string());
     if (::access(parent.c_str(), W_OK | X_OK) != 0)
       throw ParameterError(where + ": the directory " + parent.string() + " is not writable");
     for (const fs::path& file : files_of(path)) {

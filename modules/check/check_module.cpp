@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "framework/core/error.h"
 #include "framework/host/module.h"
 #include "framework/host/registry.h"
-#include "framework/core/error.h"
 #include "io/model_io.h"
 #include "modules/check/model_validity.h"
 #include "modules/check/volume_validity.h"
@@ -74,9 +74,11 @@ class CheckModule : public Module {
     ValidityReport report = check_model(*context.model, options);
     if (report.model.empty()) report.model = context.input_path;
     // A volume mesh given as the input: its tets are checked too (the model is its surfaces).
-    const VolumeMesh volume = context.input_path.empty() ? VolumeMesh{} : tets_in(context.input_path);
+    const VolumeMesh volume =
+        context.input_path.empty() ? VolumeMesh{} : tets_in(context.input_path);
     if (!volume.tets.empty())
-      for (CheckEntry& e : check_volume_mesh(volume, options.max_examples)) report.checks.push_back(std::move(e));
+      for (CheckEntry& e : check_volume_mesh(volume, options.max_examples))
+        report.checks.push_back(std::move(e));
     const nlohmann::json json = to_json(report);
     context.report["check"] = json;
     if (parameters.get_bool("json"))

@@ -20,8 +20,8 @@ CheckEntry entry(const char* name) {
 
 std::string tet_text(const VolumeMesh& mesh, size_t t) {
   const Tetrahedron& k = mesh.tets[t];
-  return "tet " + std::to_string(t) + " (vertices " + std::to_string(k[0]) + " " + std::to_string(k[1]) + " " +
-         std::to_string(k[2]) + " " + std::to_string(k[3]) + ")";
+  return "tet " + std::to_string(t) + " (vertices " + std::to_string(k[0]) + " " +
+         std::to_string(k[1]) + " " + std::to_string(k[2]) + " " + std::to_string(k[3]) + ")";
 }
 
 Vec3 tet_centre(const VolumeMesh& mesh, size_t t) {
@@ -68,19 +68,22 @@ std::vector<CheckEntry> check_volume_mesh(const VolumeMesh& mesh, int max_exampl
   for (const auto& [face, tets] : face_tets) {
     const bool overlap = tets.size() == 2 && tets[0].second == tets[1].second;
     if (tets.size() <= 2 && !overlap) continue;
-    const Vec3 at = (mesh.vertices[static_cast<size_t>(face[0])] + mesh.vertices[static_cast<size_t>(face[1])] +
-                     mesh.vertices[static_cast<size_t>(face[2])]) /
-                        3.0 +
-                    mesh.frame.origin;
+    const Vec3 at =
+        (mesh.vertices[static_cast<size_t>(face[0])] + mesh.vertices[static_cast<size_t>(face[1])] +
+         mesh.vertices[static_cast<size_t>(face[2])]) /
+            3.0 +
+        mesh.frame.origin;
     add(faces, max_examples,
-        "face " + std::to_string(face[0]) + " " + std::to_string(face[1]) + " " + std::to_string(face[2]) + " of " +
-            std::to_string(tets.size()) + " tets" + (overlap ? " on one side" : ""),
+        "face " + std::to_string(face[0]) + " " + std::to_string(face[1]) + " " +
+            std::to_string(face[2]) + " of " + std::to_string(tets.size()) + " tets" +
+            (overlap ? " on one side" : ""),
         at);
   }
   repeated.message = repeated.passed() ? "every tet has four distinct vertices"
                                        : "tets naming one vertex twice (no volume at all)";
   flat.message = flat.passed() ? "no flat tet" : "tets whose four vertices are coplanar";
-  inverted.message = inverted.passed() ? "every tet positively oriented" : "tets of negative orientation";
+  inverted.message =
+      inverted.passed() ? "every tet positively oriented" : "tets of negative orientation";
   faces.message = faces.passed() ? "every face on at most two tets, one on each side"
                                  : "faces on more than two tets, or on two tets that overlap";
   return {repeated, flat, inverted, faces};

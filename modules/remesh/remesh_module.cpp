@@ -70,10 +70,12 @@ nlohmann::json verdict_json(const ValidityReport& verdict) {
     if (c.severity != Severity::Error || c.passed()) continue;
     nlohmann::json places = nlohmann::json::array();
     for (size_t i = 0; i < c.examples.size() && i < static_cast<size_t>(kDefectsNamed); ++i)
-      places.push_back({{"what", c.examples[i].what},
-                        {"location", {c.examples[i].location.x(), c.examples[i].location.y(),
-                                      c.examples[i].location.z()}}});
-    failed.push_back({{"check", c.name}, {"count", c.count}, {"message", c.message}, {"examples", places}});
+      places.push_back(
+          {{"what", c.examples[i].what},
+           {"location",
+            {c.examples[i].location.x(), c.examples[i].location.y(), c.examples[i].location.z()}}});
+    failed.push_back(
+        {{"check", c.name}, {"count", c.count}, {"message", c.message}, {"examples", places}});
   }
   return {{"errors", verdict.errors()}, {"failed", failed}};
 }
@@ -89,7 +91,8 @@ std::string defects_text(const ValidityReport& verdict) {
     for (const CheckExample& e : c.examples) {
       if (named >= kDefectsNamed) break;
       char at[128];
-      std::snprintf(at, sizeof at, " at %.10g %.10g %.10g", e.location.x(), e.location.y(), e.location.z());
+      std::snprintf(at, sizeof at, " at %.10g %.10g %.10g", e.location.x(), e.location.y(),
+                    e.location.z());
       places += (places.empty() ? "" : ", ") + e.what + at;
       ++named;
     }
@@ -120,28 +123,33 @@ class RemeshModule final : public Module {
     std::vector<ParameterSpec> p;
     p.push_back(spec("edge-length", ParameterType::Double, nullptr,
                      "target edge length in model units (gives the number of seeds)", 0.0));
-    p.push_back(spec("seeds", ParameterType::Int, nullptr, "number of seeds (overrides --edge-length)", 1, kMaxCount));
+    p.push_back(spec("seeds", ParameterType::Int, nullptr,
+                     "number of seeds (overrides --edge-length)", 1, kMaxCount));
     p.push_back(spec("iterations", ParameterType::Int, 100, "maximum optimisation iterations", 0, 1e6));
     ParameterSpec optimizer = spec("optimizer", ParameterType::Choice, "lbfgs",
                                    "seed optimiser: lbfgs, lloyd, or ceres (when built with Ceres)");
     optimizer.choices = {"lbfgs", "lloyd", "ceres"};
     p.push_back(optimizer);
-    p.push_back(spec("seed", ParameterType::Int, 1, "random seed of the initial sampling", 0, kMaxRandomSeed));
+    p.push_back(spec("seed", ParameterType::Int, 1, "random seed of the initial sampling", 0,
+                     kMaxRandomSeed));
     p.push_back(spec("gradient-threshold", ParameterType::Double, 1e-6,
-                     "stop when |grad F| falls below this fraction of its initial value", 0.0, 1.0));
+                     "stop when |grad F| falls below this fraction of its initial value", 0.0,
+                     1.0));
     p.push_back(spec("boundary-weight", ParameterType::Double, nullptr,
                      "weight alpha in [0, 1] of the contact energy (default: from the gradient-norm ratio)", 0.0, 1.0));
     p.push_back(spec("dump-seeds", ParameterType::Path, nullptr, "write the optimised seeds, x y z per line"));
     p.back().output = true;
-    ParameterSpec output = spec("output", ParameterType::Path, nullptr,
-                                "write the remeshed model (format from the extension); nothing is written "
-                                "when it is not valid");
+    ParameterSpec output =
+        spec("output", ParameterType::Path, nullptr,
+             "write the remeshed model (format from the extension); nothing is written "
+             "when it is not valid");
     output.short_name = "o";
     output.output = true;
     output.extensions = writable_model_extensions();
     p.push_back(output);
-    ParameterSpec keep_invalid = spec("keep-invalid", ParameterType::Path, nullptr,
-                                      "write the remeshed model here when it is not valid, for inspection");
+    ParameterSpec keep_invalid =
+        spec("keep-invalid", ParameterType::Path, nullptr,
+             "write the remeshed model here when it is not valid, for inspection");
     keep_invalid.output = true;
     keep_invalid.extensions = writable_model_extensions();
     p.push_back(keep_invalid);
@@ -193,16 +201,19 @@ class RemeshModule final : public Module {
     } else if (parameters.has("edge-length")) {
       options.edge_length = parameters.get_double("edge-length");
       if (!(options.edge_length > 0.0)) throw ParameterError("parameter --edge-length: must be positive");
-      seed_count = context.model->area() / (std::sqrt(3.0) / 2.0 * options.edge_length * options.edge_length);
+      seed_count = context.model->area() /
+                   (std::sqrt(3.0) / 2.0 * options.edge_length * options.edge_length);
       char text[96];
-      std::snprintf(text, sizeof text, "--edge-length %g (%.3g seeds)", options.edge_length, seed_count);
+      std::snprintf(text, sizeof text, "--edge-length %g (%.3g seeds)", options.edge_length,
+                    seed_count);
       asked = text;
     } else {
       throw ParameterError("remesh: give --edge-length or --seeds");
     }
-    require_memory(context,
-                   seed_count * kBytesPerSeed + context.model->num_triangles() * kBytesPerInputTriangle,
-                   "remesh " + asked);
+    require_memory(
+        context,
+        seed_count * kBytesPerSeed + context.model->num_triangles() * kBytesPerInputTriangle,
+        "remesh " + asked);
     options.optimizer.max_iterations = static_cast<int>(parameters.get_int("iterations"));
     options.optimizer.kind = optimizer_from_string(parameters.get_string("optimizer"));
     options.optimizer.gradient_threshold = parameters.get_double("gradient-threshold");
@@ -312,7 +323,8 @@ class RemeshModule final : public Module {
     // is read back); nothing invalid goes to --output, --keep-invalid is where to look at it.
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
     const WriteOptions write{{context.input_path}};
-    const std::string out = parameters.has("output") ? parameters.get_string("output") : std::string();
+    const std::string out =
+        parameters.has("output") ? parameters.get_string("output") : std::string();
     std::string text;
     ValidityReport verdict;
     if (!out.empty()) {

@@ -2,7 +2,6 @@
 // seed paper), with the Hausdorff distance to a reference. Text table on stdout, or one JSON
 // object with --json; the same object goes to context.report["stats"].
 #include <cstdio>
-
 #include <filesystem>
 
 #include "framework/core/error.h"
@@ -63,11 +62,14 @@ std::string volume_table(const VolumeMesh& mesh, const VolumeQuality& q) {
   std::string out;
   char line[256];
   std::snprintf(line, sizeof line,
-                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; radius-edge max %.3g "
-                "mean %.3g; %ld flat or inverted tets; %ld tets with a repeated vertex; %ld surface triangles "
+                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; "
+                "radius-edge max %.3g "
+                "mean %.3g; %ld flat or inverted tets; %ld tets with a repeated vertex; %ld "
+                "surface triangles "
                 "not on a tet\n",
-                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg, q.max_radius_edge,
-                q.mean_radius_edge, q.nonpositive_tets, q.repeated_vertex_tets, q.nonconforming_triangles);
+                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg,
+                q.max_radius_edge, q.mean_radius_edge, q.nonpositive_tets, q.repeated_vertex_tets,
+                q.nonconforming_triangles);
   out += line;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     if (q.region_tets[r] == 0) continue;
