@@ -1,9 +1,12 @@
-// Writing output files so that a failed write never leaves a partial file behind and never
-// overwrites an input of the run.
+// Writing output files so that a failed or interrupted write never leaves a partial file
+// behind and never overwrites an input of the run.
 //
-// AtomicFile writes into a temporary file created in the target's directory (so the final
-// rename stays on one file system and is atomic) and renames it over the target on commit().
-// Destroying an AtomicFile that was not committed removes the temporary file.
+// AtomicFile writes into an unnamed temporary file (O_TMPFILE) in the target's directory and
+// links it into place on commit(): killed at any moment, even by SIGKILL, it leaves nothing.
+// Where the file system has no O_TMPFILE it writes a named temporary `.NAME.tmp-XXXXXX`
+// beside the target instead, registered for removal on SIGINT/SIGTERM (signal_cleanup.h), and
+// renames it over the target on commit(). Destroying an AtomicFile that was not committed
+// discards the temporary file.
 #pragma once
 
 #include <fstream>
@@ -19,7 +22,7 @@ bool is_protected_path(const std::string& path, const std::vector<std::string>& 
 
 class AtomicFile {
  public:
-  /// Creates the temporary file beside `target`.
+  /// Creates the temporary file in the directory of `target`.
   /// \throws OutputError when `target` is protected, is a directory, or the temporary file
   /// cannot be created (missing directory, permissions).
   AtomicFile(const std::string& target, const std::vector<std::string>& protected_paths);
@@ -28,18 +31,27 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ostream& stream() { return out_; }
-  /// Flushes and closes the temporary file. \throws OutputError on any write error.
+  /// Flushes and closes the stream. \throws OutputError on any write error.
   void close();
-  /// close(), then renames the temporary file over the target. \throws OutputError
+  /// close(), then puts the file in place of the target. \throws OutputError
   void commit();
 
   const std::string& target() const { return target_; }
+  /// True when the temporary file has no name (O_TMPFILE).
+  bool unnamed() const { return unnamed_fd_ >= 0; }
 
  private:
   void discard() noexcept;
+  /// A named temporary beside the target, registered for removal on a signal.
+  void create_named(const std::string& pattern);
+  /// Gives the unnamed file the name `name`. \returns false (errno set) on failure.
+  bool link_unnamed(const std::string& name) const;
 
   std::string target_;
-  std::string temp_;
+  std::string temp_;       // named temporary (empty while unnamed or after commit)
+  int temp_slot_ = -1;     // its slot in the signal cleanup registry
+  int unnamed_fd_ = -1;    // the O_TMPFILE descriptor
+  std::string directory_;  // where the temporary lives
   std::ofstream out_;
   std::vector<char> buffer_;
   bool closed_ = false;

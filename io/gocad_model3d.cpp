@@ -21,6 +21,7 @@ struct HeaderTface {
   int tsurf = -1;
   long line = 0;
   bool has_key = false;
+  long key_line = 0;
   std::array<Vec3, 3> key;
 };
 
@@ -137,6 +138,7 @@ SurfaceSoup read_model3d(const TextSource& source) {
       // The key triangle: three coordinate lines (absent in some writers).
       if (in.next_nonblank()) {
         if (starts_number(in[0])) {
+          tf.key_line = in.line();
           for (int k = 0; k < 3; ++k) {
             if (k > 0 && !in.next_nonblank())
               in.fail("file ends inside the key triangle of TFACE " + std::to_string(tf.number));
@@ -223,7 +225,14 @@ SurfaceSoup read_model3d(const TextSource& source) {
     for (size_t k = 0; k < list.size(); ++k) {
       const HeaderTface& tf = tfaces[list[k]];
       std::vector<Triangle>& patch = body.patches[k];
-      if (tf.has_key && key_orientation(body.points, patch, tf.key, tol) < 0)
+      // A key triangle that is no triangle of its patch orients nothing: the file is wrong.
+      const int orientation =
+          tf.has_key && !patch.empty() ? key_orientation(body.points, patch, tf.key, tol) : 1;
+      if (orientation == 0)
+        in.fail_at(tf.key_line, "the key triangle of TFACE " + std::to_string(tf.number) +
+                                    " is no triangle of TSurf '" + tsurf_names[s] +
+                                    "' (its TFACE " + std::to_string(k + 1) + ")");
+      if (orientation < 0)
         for (Triangle& t : patch) std::swap(t[1], t[2]);
       const int g = group_of_tface[list[k]];
       SurfaceKind kind = surface_kind_from_string(tf.type);

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -24,12 +25,27 @@ std::string quoted(std::string_view token) {
 }  // namespace
 
 TextSource load_text(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a model file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  // One allocation of the file's size where it has one (not a pipe), not a growing buffer.
+  TextSource source{path, {}};
+  const std::uintmax_t size =
+      std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  if (!ec && size > 0) {
+    source.text.resize(static_cast<size_t>(size));
+    in.read(source.text.data(), static_cast<std::streamsize>(size));
+    source.text.resize(static_cast<size_t>(in.gcount()));
+    if (in.bad()) throw InputError(path, 0, "cannot read file");
+    in.clear();
+  }
+  std::ostringstream rest;  // what a growing file or a pipe holds beyond its size
+  rest << in.rdbuf();
   if (in.bad()) throw InputError(path, 0, "cannot read file");
-  return TextSource{path, buffer.str()};
+  source.text += rest.str();
+  return source;
 }
 
 bool parse_integer(std::string_view token, long long& value) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <sstream>
 
 #include "framework/core/error.h"
 #include "io/atomic_file.h"
@@ -38,12 +39,20 @@ std::vector<std::string> readable_model_extensions() { return {".ml", ".ts", ".o
 std::vector<std::string> writable_model_extensions() { return {".ml", ".ts", ".obj", ".mesh", ".vtu", ".msh"}; }
 std::vector<std::string> writable_volume_extensions() { return {".mesh", ".vtu", ".msh", ".node", ".ele"}; }
 
-SurfaceSoup read_soup(const std::string& path) {
+namespace {
+
+void require_readable_extension(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a model file");
   const std::string ext = extension(path);
   const auto& readable = readable_model_extensions();
   if (std::find(readable.begin(), readable.end(), ext) == readable.end())
     throw InputError(path, 0, "unknown model file extension '" + ext + "' (supported: " + list(readable) + ")");
-  const TextSource source = load_text(path);
+}
+
+SurfaceSoup read_soup_source(const TextSource& source) {
+  const std::string ext = extension(source.name);
   if (ext == ".ml") return read_model3d(source);
   if (ext == ".ts") return read_tsurf(source);
   if (ext == ".obj") return read_obj(source);
@@ -52,33 +61,68 @@ SurfaceSoup read_soup(const std::string& path) {
   return read_msh(source);
 }
 
-StructuralModel read_model(const std::string& path, const ReadOptions& options) {
-  return build_model(read_soup(path), options.build);
-}
-
-void write_model(const StructuralModel& model, const std::string& path, const WriteOptions& options) {
+// The writer of a model format, chosen by the extension of `path`. \throws OutputError
+std::function<void(std::ostream&)> model_writer(const StructuralModel& model,
+                                                const std::string& path,
+                                                const WriteOptions& options) {
   const std::string ext = extension(path);
   const int precision = options.precision;
   std::function<void(std::ostream&)> write;
   if (ext == ".ml")
-    write = [&](std::ostream& out) { write_model3d(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_model3d(model, out, precision); };
   else if (ext == ".ts")
-    write = [&](std::ostream& out) { write_tsurf(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_tsurf(model, out, precision); };
   else if (ext == ".obj")
-    write = [&](std::ostream& out) { write_obj(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_obj(model, out, precision); };
   else if (ext == ".mesh")
-    write = [&](std::ostream& out) { write_medit(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_medit(model, out, precision); };
   else if (ext == ".vtu")
-    write = [&](std::ostream& out) { write_vtu(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_vtu(model, out, precision); };
   else if (ext == ".msh")
-    write = [&](std::ostream& out) { write_msh(model, out, precision); };
+    write = [&model, precision](std::ostream& out) { write_msh(model, out, precision); };
   else
     throw OutputError(path + ": unknown model file extension '" + ext +
                       "' (supported: " + list(writable_model_extensions()) + ")");
-  write_atomically(path, options.protected_paths, write);
+  return write;
+}
+
+}  // namespace
+
+SurfaceSoup read_soup(const std::string& path) {
+  require_readable_extension(path);
+  return read_soup_source(load_text(path));
+}
+
+StructuralModel read_model(const std::string& path, const ReadOptions& options) {
+  return build_model(read_soup(path), options.build);
+}
+
+StructuralModel read_model_text(std::string text, const std::string& path,
+                                const ReadOptions& options) {
+  require_readable_extension(path);
+  return build_model(read_soup_source(TextSource{path, std::move(text)}), options.build);
+}
+
+void write_model(const StructuralModel& model, const std::string& path,
+                 const WriteOptions& options) {
+  write_atomically(path, options.protected_paths, model_writer(model, path, options));
+}
+
+std::string model_text(const StructuralModel& model, const std::string& path,
+                       const WriteOptions& options) {
+  std::ostringstream out;
+  model_writer(model, path, options)(out);
+  return out.str();
+}
+
+void write_text(const std::string& text, const std::string& path, const WriteOptions& options) {
+  write_atomically(path, options.protected_paths, [&](std::ostream& out) { out << text; });
 }
 
 VolumeMesh read_volume_mesh(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "is a directory, not a volume mesh");
   const std::string ext = extension(path);
   if (ext == ".mesh") return read_medit_volume(load_text(path));
   if (ext == ".vtu") return read_vtu_volume(load_text(path));
@@ -87,7 +131,6 @@ VolumeMesh read_volume_mesh(const std::string& path) {
     const std::string base = tetgen_base(path);
     const TextSource node = load_text(base + ".node");
     const TextSource ele = load_text(base + ".ele");
-    std::error_code ec;
     if (std::filesystem::exists(base + ".face", ec)) {
       const TextSource face = load_text(base + ".face");
       return read_tetgen(node, ele, &face);

@@ -37,6 +37,15 @@ SurfaceSoup read_soup(const std::string& path);
 StructuralModel read_model(const std::string& path, const ReadOptions& options = {});
 /// \throws OutputError
 void write_model(const StructuralModel& model, const std::string& path, const WriteOptions& options = {});
+/// The text write_model() would write at `path` (format from its extension). \throws OutputError
+std::string model_text(const StructuralModel& model, const std::string& path,
+                       const WriteOptions& options = {});
+/// Reads `text` the way read_model() reads a file `path` holding it. \throws InputError, ModelError
+StructuralModel read_model_text(std::string text, const std::string& path,
+                                const ReadOptions& options = {});
+/// Writes `text` at `path` atomically (AtomicFile), refusing the protected paths.
+/// \throws OutputError
+void write_text(const std::string& text, const std::string& path, const WriteOptions& options = {});
 
 /// Reads a tetrahedral mesh: .mesh (Tetrahedra), .vtu, .msh, or TetGen files (any of
 /// .node/.ele/.face; the .face file is optional). Vertices are moved to a local frame.

@@ -3,11 +3,15 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <thread>
 
 #include "framework/core/error.h"
+#include "framework/core/signal_cleanup.h"
+#include "framework/host/memory_budget.h"
 #include "framework/host/pipeline.h"
 #include "framework/host/plugin_loader.h"
 #include "framework/host/runner.h"
@@ -18,6 +22,25 @@ namespace voroseal {
 namespace {
 
 constexpr const char* kVersion = "0.1.0";
+// --threads at most this many times the hardware threads: more only adds contention, and far
+// more makes the OpenMP runtime fail to create them.
+constexpr int kThreadsPerHardwareThread = 4;
+
+int max_threads() {
+  const unsigned hardware = std::thread::hardware_concurrency();
+  return kThreadsPerHardwareThread * static_cast<int>(hardware > 0 ? hardware : 1);
+}
+
+// "0 to 100": a numeric parameter's bounds for --help and `voroseal modules`.
+std::string range_text(const ParameterSpec& spec) {
+  if (spec.type != ParameterType::Int && spec.type != ParameterType::Double) return "";
+  auto number = [&](double v) {
+    if (spec.type == ParameterType::Int && std::abs(v) < 9.0e15)
+      return std::to_string(static_cast<long long>(v));
+    return nlohmann::json(v).dump();
+  };
+  return number(spec.min) + " to " + number(spec.max);
+}
 
 std::string default_text(const ParameterSpec& spec) {
   if (spec.default_value.is_null()) return "";
@@ -44,6 +67,9 @@ void print_modules(const ModuleRegistry& registry, bool json) {
                           {"default", p.default_value},
                           {"doc", p.doc},
                           {"choices", p.choices},
+                          {"min", p.min},
+                          {"max", p.max},
+                          {"positional", p.positional},
                           {"required", p.required}});
       out.push_back({{"name", m->name()}, {"description", m->description()}, {"parameters", params}});
     }
@@ -53,9 +79,14 @@ void print_modules(const ModuleRegistry& registry, bool json) {
   for (const Module* m : registry.modules()) {
     std::cout << m->name() << "  " << m->description() << "\n";
     for (const ParameterSpec& p : m->parameters()) {
-      std::cout << "    --" << p.name << " <" << type_text(p) << ">";
+      if (p.positional)
+        std::cout << "    " << p.name << " (or --" << p.name << ") <" << type_text(p) << ">";
+      else
+        std::cout << "    --" << p.name << " <" << type_text(p) << ">";
       const std::string d = default_text(p);
       if (!d.empty()) std::cout << " (default " << d << ")";
+      const std::string range = range_text(p);
+      if (!range.empty()) std::cout << " (" << range << ")";
       if (p.required) std::cout << " (required)";
       std::cout << "  " << p.doc << "\n";
     }
@@ -113,9 +144,17 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
                "Every subcommand below is a module; `voroseal modules` lists their parameters."};
   app.require_subcommand(1);
   app.set_version_flag("--version", kVersion);
+  install_signal_cleanup();
   int threads = 0;
   bool quiet = false, verbose = false;
-  app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+  const int threads_limit = max_threads();
+  app.add_option("--threads", threads,
+                 "worker threads (0: all cores; 0 to " + std::to_string(threads_limit) + ")")
+      ->check(CLI::Range(0, threads_limit));
+  std::string max_memory;
+  app.add_option("--max-memory", max_memory,
+                 "memory a command may plan to use, e.g. 8G (default: the machine's memory, " +
+                     memory_text(machine_memory_bytes()) + ")");
   app.add_flag("-q,--quiet", quiet, "no progress and no info lines on stderr: only results, warnings and errors");
   app.add_flag("-v,--verbose", verbose, "debug log on stderr");
   bool json_output = false;
@@ -152,8 +191,10 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
       c.app->add_option("--feature-angle", feature_angle,
                         "split a surface where it folds more than this (degrees); for soups without groups")
           ->check(CLI::Range(0.0, 180.0));
-      c.app->add_option("--weld-tolerance", weld_tolerance, "welding distance relative to the bbox diagonal")
-          ->check(CLI::NonNegativeNumber);
+      c.app
+          ->add_option("--weld-tolerance", weld_tolerance,
+                       "welding distance relative to the bbox diagonal (0 to 0.1)")
+          ->check(CLI::Range(0.0, 0.1));
       c.app->add_option("--corner-rule", corner_rule,
                         "incidence (RINGMesh: a corner where the set of touching surfaces changes, one per "
                         "closed contact) or signature (meshreport)")
@@ -163,13 +204,16 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
       std::string doc = spec.doc;
       const std::string d = default_text(spec);
       if (!d.empty()) doc += " (default " + d + ")";
+      const std::string range = range_text(spec);
+      if (!range.empty()) doc += " (" + range + ")";
       if (spec.type == ParameterType::Bool) {
         // --name switches it on, --no-name off (for parameters that default to true).
         c.bool_options[spec.name] = c.app->add_flag("--" + spec.name + ",!--no-" + spec.name, c.flags[spec.name], doc);
         continue;
       }
-      std::string names = spec.positional ? spec.name : "--" + spec.name;
-      if (!spec.short_name.empty() && !spec.positional) names = "-" + spec.short_name + "," + names;
+      // A positional parameter may also be named, as `voroseal modules` lists it.
+      std::string names = spec.positional ? spec.name + ",--" + spec.name : "--" + spec.name;
+      if (!spec.short_name.empty()) names = "-" + spec.short_name + "," + names;
       CLI::Option* o = c.app->add_option(names, c.values[spec.name], doc);
       o->type_name(type_text(spec));
       if (spec.required) o->required();
@@ -191,6 +235,15 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
     return kExitOk;
   }
   if (threads > 0) omp_set_num_threads(threads);
+  double max_memory_bytes = 0.0;
+  if (!max_memory.empty()) {
+    try {
+      max_memory_bytes = parse_memory_size(max_memory);
+    } catch (const ParameterError& e) {
+      log.error(e.what());
+      return kExitUnreadable;
+    }
+  }
 
   Progress progress(!quiet && stderr_is_terminal());
   if (study->parsed())
@@ -198,6 +251,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
                              progress);
   Context context(log, progress);
   context.threads = threads;
+  context.max_memory_bytes = max_memory_bytes;
   for (ModuleCommand& c : commands) {
     if (!c.app->parsed()) continue;
     ModuleRun run;
@@ -209,7 +263,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
     for (const ParameterSpec& spec : c.module->parameters()) {
       if (spec.type == ParameterType::Bool) {
         if (c.bool_options[spec.name]->count() > 0) run.parameters[spec.name] = c.flags[spec.name];
-      } else if (c.app->count(spec.positional ? spec.name : "--" + spec.name) > 0) {
+      } else if (c.app->count("--" + spec.name) > 0) {
         run.parameters[spec.name] = c.values[spec.name];
       }
     }

@@ -107,6 +107,23 @@ double radius_edge_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
   return center.norm() / shortest;
 }
 
+bool has_repeated_vertex(const Tetrahedron& tet) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (tet[i] == tet[j]) return true;
+  return false;
+}
+
+int tet_orientation(const VolumeMesh& mesh, size_t t) {
+  const Tetrahedron& tet = mesh.tets[t];
+  auto point = [&](int k) {
+    const Vec3& p = mesh.vertices[static_cast<size_t>(tet[k])];
+    return K::Point_3(p.x(), p.y(), p.z());
+  };
+  const CGAL::Orientation o = CGAL::orientation(point(0), point(1), point(2), point(3));
+  return o == CGAL::POSITIVE ? 1 : o == CGAL::ZERO ? 0 : -1;
+}
+
 VolumeQuality measure_volume(const VolumeMesh& mesh) {
   VolumeQuality q;
   q.vertices = static_cast<long>(mesh.vertices.size());
@@ -119,7 +136,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
 
   double min_dihedral = 180.0, max_dihedral = 0.0, max_ratio = 0.0, sum_ratio = 0.0;
   double min_volume = std::numeric_limits<double>::infinity();
-  long nonpositive = 0;
+  long nonpositive = 0, repeated = 0;
   const long n = q.tets;
 #pragma omp parallel
   {
@@ -127,7 +144,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
     std::vector<long> region_tets(q.region_tets.size(), 0);
     double local_min_dihedral = 180.0, local_max_dihedral = 0.0, local_max_ratio = 0.0, local_sum_ratio = 0.0;
     double local_min_volume = std::numeric_limits<double>::infinity();
-    long local_nonpositive = 0;
+    long local_nonpositive = 0, local_repeated = 0;
 #pragma omp for schedule(static) nowait
     for (long t = 0; t < n; ++t) {
       const Tetrahedron& tet = mesh.tets[t];
@@ -137,9 +154,10 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       const Vec3& d = mesh.vertices[tet[3]];
       const double volume = tet_volume(a, b, c, d);
       local_min_volume = std::min(local_min_volume, volume);
-      const CGAL::Orientation o = CGAL::orientation(K::Point_3(a.x(), a.y(), a.z()), K::Point_3(b.x(), b.y(), b.z()),
-                                                    K::Point_3(c.x(), c.y(), c.z()), K::Point_3(d.x(), d.y(), d.z()));
-      if (o != CGAL::POSITIVE) ++local_nonpositive;
+      if (has_repeated_vertex(tet))
+        ++local_repeated;
+      else if (tet_orientation(mesh, static_cast<size_t>(t)) <= 0)
+        ++local_nonpositive;
       for (double angle : dihedral_angles_deg(a, b, c, d)) {
         local_min_dihedral = std::min(local_min_dihedral, angle);
         local_max_dihedral = std::max(local_max_dihedral, angle);
@@ -161,6 +179,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       sum_ratio += local_sum_ratio;
       min_volume = std::min(min_volume, local_min_volume);
       nonpositive += local_nonpositive;
+      repeated += local_repeated;
       for (size_t r = 0; r < region_volume.size(); ++r) {
         q.region_volume[r] += region_volume[r];
         q.region_tets[r] += region_tets[r];
@@ -173,6 +192,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   q.mean_radius_edge = n > 0 ? sum_ratio / static_cast<double>(n) : 0.0;
   q.min_volume = n > 0 ? min_volume : 0.0;
   q.nonpositive_tets = nonpositive;
+  q.repeated_vertex_tets = repeated;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     q.total_volume += q.region_volume[r];
     if (q.region_tets[r] > 0) ++q.regions;

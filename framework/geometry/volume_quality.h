@@ -19,8 +19,11 @@ struct VolumeQuality {
   double max_radius_edge = 0.0;     // circumradius / shortest edge; √6/4 ≈ 0.612 for a regular tet
   double mean_radius_edge = 0.0;
   double min_volume = 0.0;          // smallest signed tet volume
-  /// Tets whose orientation is not strictly positive (exact predicate): flat or inverted.
+  /// Tets whose orientation is not strictly positive (exact predicate): flat or inverted, with
+  /// four distinct vertices.
   long nonpositive_tets = 0;
+  /// Tets that name one vertex twice: no tet at all, not merely a flat one.
+  long repeated_vertex_tets = 0;
   double total_volume = 0.0;
   /// Sum of tet volumes per region id (index = id, sized to the largest id + 1).
   std::vector<double> region_volume;
@@ -40,6 +43,13 @@ std::vector<int> triangles_not_in_tets(const VolumeMesh& mesh);
 /// Vertices are matched by exact coordinates in the local frame, so it holds for any mesh
 /// built from the model by a mesher that copies input points (TetGen does) and the same frame.
 std::vector<int> model_triangles_not_in_tets(const StructuralModel& model, const VolumeMesh& mesh);
+
+/// True when the tet names one vertex more than once.
+bool has_repeated_vertex(const Tetrahedron& tet);
+
+/// The exact orientation of tet `t` of `mesh`: +1 (the orientation VolumeMesh uses), 0 (flat),
+/// -1 (inverted).
+int tet_orientation(const VolumeMesh& mesh, size_t t);
 
 /// Signed volume of a tet, positive for the orientation VolumeMesh uses.
 double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);

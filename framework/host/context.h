@@ -22,6 +22,7 @@ struct Context {
   std::shared_ptr<VolumeMesh> volume;            // set by tetmesh
   nlohmann::json report = nlohmann::json::object();  // report[module name] = its results
   int threads = 0;                              // 0: all cores
+  double max_memory_bytes = 0;                  // 0: the machine's memory (memory_budget.h)
   int exit_code = 0;                            // a step may set a non-zero verdict (check)
   /// The modules of this run, so that a module can chain another one by name (remesh
   /// --tetmesh runs the tetmesh module) without linking it. Set by the runner; may be null.

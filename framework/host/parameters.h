@@ -25,6 +25,11 @@ struct ParameterSpec {
   bool positional = false;     // given on the command line after the model, without a flag
   double min = -std::numeric_limits<double>::infinity();  // numeric bounds, inclusive
   double max = std::numeric_limits<double>::infinity();
+  /// A Path parameter naming a file the module writes: checked with the run's other outputs
+  /// and inputs before any work (output_paths.h).
+  bool output = false;
+  /// The extensions (".obj", lower case) an output can have; empty: any.
+  std::vector<std::string> extensions;
 };
 
 /// Values of a module's parameters, validated against the specs.

@@ -36,6 +36,7 @@ std::vector<ParameterSpec> read_specs() {
   angle.max = 180.0;
   ParameterSpec weld{"weld-tolerance", ParameterType::Double, 1e-7, "welding distance relative to the bbox diagonal"};
   weld.min = 0.0;
+  weld.max = 0.1;
   ParameterSpec corner{"corner-rule", ParameterType::Choice, "incidence", "corner placement rule"};
   corner.choices = {"incidence", "signature"};
   return {angle, weld, corner};
@@ -57,10 +58,12 @@ std::vector<ParameterSpec> picture_specs() {
   ParameterSpec height{"height", ParameterType::Int, d.height, "picture height in pixels"};
   height.min = 16, height.max = 8192;
   ParameterSpec azimuth{"azimuth", ParameterType::Double, d.azimuth_deg, "viewer azimuth, degrees from north"};
+  azimuth.min = -360, azimuth.max = 360;
   ParameterSpec elevation{"elevation", ParameterType::Double, d.elevation_deg, "viewer elevation, degrees"};
   elevation.min = -90, elevation.max = 90;
   ParameterSpec exaggeration{"vertical-exaggeration", ParameterType::Double, d.vertical_exaggeration, ""};
   exaggeration.min = 1e-3;
+  exaggeration.max = 1e3;
   ParameterSpec perspective{"perspective", ParameterType::Bool, d.perspective, ""};
   ParameterSpec cut{"cut-away", ParameterType::Bool, d.cut_away, ""};
   ParameterSpec colour{"colour-by", ParameterType::Choice, "part", ""};

@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "framework/core/error.h"
+#include "framework/host/output_paths.h"
 
 namespace voroseal {
 
@@ -17,6 +18,8 @@ void run_module(const ModuleRegistry& registry, const ModuleRun& run, Context& c
   const Module& module = registry.get(run.module);
   context.registry = &registry;
   const Parameters parameters(module.parameters(), run.parameters);
+  check_output_paths(module.parameters(), parameters,
+                     {context.input_path.empty() ? run.input : context.input_path});
   if (module.needs_model() && !context.model) {
     if (run.input.empty()) throw ParameterError(run.module + ": a model file is required");
     load_model(context, run.input, run.read);

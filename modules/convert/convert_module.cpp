@@ -16,6 +16,9 @@ class ConvertModule : public Module {
     ParameterSpec output{"output", ParameterType::Path, nullptr, "output file; format from its extension"};
     output.required = true;
     output.positional = true;
+    output.short_name = "o";
+    output.output = true;
+    output.extensions = writable_model_extensions();
     return {output};
   }
   void run(Context& context, const Parameters& parameters) const override {

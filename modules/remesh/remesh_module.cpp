@@ -10,43 +10,95 @@
 #include <system_error>
 
 #include "framework/core/error.h"
+#include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
+#include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
+#include "io/atomic_file.h"
 #include "io/model_io.h"
+#include "modules/check/model_validity.h"
 #include "modules/remesh/remesh.h"
 
 namespace voroseal {
 
 namespace {
 
-/// Writes "x y z" per seed in file coordinates (local + frame origin), via a temporary file.
+// What a remesh holds per seed (its cell in the RVD, the optimiser's vectors, the dual mesh and
+// its clean-up) and per input triangle (the model, its search trees, the RVD's clipping):
+// upper figures, for refusing runs that cannot fit before they start.
+constexpr double kBytesPerSeed = 4096.0;
+constexpr double kBytesPerInputTriangle = 2048.0;
+// Defects named in the error when the remeshed model is invalid.
+constexpr int kDefectsNamed = 5;
+
+/// Writes "x y z" per seed in file coordinates (local + frame origin), atomically.
 void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::string& path,
                 const std::string& input_path) {
-  std::error_code ec;
-  if (!input_path.empty() && std::filesystem::exists(path, ec) &&
-      std::filesystem::equivalent(path, input_path, ec))
-    throw OutputError("remesh: refusing to write the seeds over the input file " + path);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw OutputError("remesh: cannot write " + path);
+  write_atomically(path, {input_path}, [&](std::ostream& out) {
     char line[128];
     for (const Vec3& p : seeds) {
       const Vec3 x = p + frame.origin;
       std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
       out << line;
     }
-    out.close();
-    if (!out) {
-      std::filesystem::remove(tmp, ec);
-      throw OutputError("remesh: cannot write " + path);
+  });
+}
+
+/// check_model() on `text` read back as the file `path` would be.
+ValidityReport written_verdict(const std::string& text, const std::string& path) {
+  try {
+    ValidityReport report = check_model(read_model_text(text, path));
+    report.model = path;
+    return report;
+  } catch (const std::exception& e) {
+    // A written model that does not read back is as invalid as can be.
+    ValidityReport report;
+    report.model = path;
+    CheckEntry entry;
+    entry.name = "structure";
+    entry.count = 1;
+    entry.message = std::string("the written model does not read back: ") + e.what();
+    report.checks.push_back(entry);
+    return report;
+  }
+}
+
+/// The failed error checks with their counts and a few places.
+nlohmann::json verdict_json(const ValidityReport& verdict) {
+  nlohmann::json failed = nlohmann::json::array();
+  for (const CheckEntry& c : verdict.checks) {
+    if (c.severity != Severity::Error || c.passed()) continue;
+    nlohmann::json places = nlohmann::json::array();
+    for (size_t i = 0; i < c.examples.size() && i < static_cast<size_t>(kDefectsNamed); ++i)
+      places.push_back(
+          {{"what", c.examples[i].what},
+           {"location",
+            {c.examples[i].location.x(), c.examples[i].location.y(), c.examples[i].location.z()}}});
+    failed.push_back(
+        {{"check", c.name}, {"count", c.count}, {"message", c.message}, {"examples", places}});
+  }
+  return {{"errors", verdict.errors()}, {"failed", failed}};
+}
+
+/// "self_intersections: 4 (triangle 12 ... at x y z; ...)", kDefectsNamed places in all.
+std::string defects_text(const ValidityReport& verdict) {
+  std::string text;
+  int named = 0;
+  for (const CheckEntry& c : verdict.checks) {
+    if (c.severity != Severity::Error || c.passed()) continue;
+    text += (text.empty() ? "" : "; ") + c.name + " " + std::to_string(c.count);
+    std::string places;
+    for (const CheckExample& e : c.examples) {
+      if (named >= kDefectsNamed) break;
+      char at[128];
+      std::snprintf(at, sizeof at, " at %.10g %.10g %.10g", e.location.x(), e.location.y(),
+                    e.location.z());
+      places += (places.empty() ? "" : ", ") + e.what + at;
+      ++named;
     }
+    if (!places.empty()) text += " (" + places + ")";
   }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw OutputError("remesh: cannot write " + path + ": " + ec.message());
-  }
+  return text;
 }
 
 class RemeshModule final : public Module {
@@ -57,8 +109,8 @@ class RemeshModule final : public Module {
   }
   std::vector<ParameterSpec> parameters() const override {
     // Field by field: robust to new ParameterSpec members.
-    auto spec = [](const char* name, ParameterType type, nlohmann::json def, const char* doc, double min = -1e300,
-                   double max = 1e300) {
+    auto spec = [](const char* name, ParameterType type, nlohmann::json def, const char* doc,
+                   double min = 0.0, double max = kMaxModelLength) {
       ParameterSpec p;
       p.name = name;
       p.type = type;
@@ -71,21 +123,36 @@ class RemeshModule final : public Module {
     std::vector<ParameterSpec> p;
     p.push_back(spec("edge-length", ParameterType::Double, nullptr,
                      "target edge length in model units (gives the number of seeds)", 0.0));
-    p.push_back(spec("seeds", ParameterType::Int, nullptr, "number of seeds (overrides --edge-length)", 1, 2147483647.0));
+    p.push_back(spec("seeds", ParameterType::Int, nullptr,
+                     "number of seeds (overrides --edge-length)", 1, kMaxCount));
     p.push_back(spec("iterations", ParameterType::Int, 100, "maximum optimisation iterations", 0, 1e6));
     ParameterSpec optimizer = spec("optimizer", ParameterType::Choice, "lbfgs",
                                    "seed optimiser: lbfgs, lloyd, or ceres (when built with Ceres)");
     optimizer.choices = {"lbfgs", "lloyd", "ceres"};
     p.push_back(optimizer);
-    p.push_back(spec("seed", ParameterType::Int, 1, "random seed of the initial sampling", 0, 9.2e18));
+    p.push_back(spec("seed", ParameterType::Int, 1, "random seed of the initial sampling", 0,
+                     kMaxRandomSeed));
     p.push_back(spec("gradient-threshold", ParameterType::Double, 1e-6,
-                     "stop when |grad F| falls below this fraction of its initial value", 0.0));
+                     "stop when |grad F| falls below this fraction of its initial value", 0.0,
+                     1.0));
     p.push_back(spec("boundary-weight", ParameterType::Double, nullptr,
                      "weight alpha in [0, 1] of the contact energy (default: from the gradient-norm ratio)", 0.0, 1.0));
     p.push_back(spec("dump-seeds", ParameterType::Path, nullptr, "write the optimised seeds, x y z per line"));
-    ParameterSpec output = spec("output", ParameterType::Path, nullptr, "write the remeshed model (format from the extension)");
+    p.back().output = true;
+    ParameterSpec output =
+        spec("output", ParameterType::Path, nullptr,
+             "write the remeshed model (format from the extension); nothing is written "
+             "when it is not valid");
     output.short_name = "o";
+    output.output = true;
+    output.extensions = writable_model_extensions();
     p.push_back(output);
+    ParameterSpec keep_invalid =
+        spec("keep-invalid", ParameterType::Path, nullptr,
+             "write the remeshed model here when it is not valid, for inspection");
+    keep_invalid.output = true;
+    keep_invalid.extensions = writable_model_extensions();
+    p.push_back(keep_invalid);
     p.push_back(spec("min-feature", ParameterType::Double, nullptr,
                      "merge features closer than this distance, d_min of paper Fig. 11c-d "
                      "(default: 0.15 x the mean edge length; 0: never merge)",
@@ -125,6 +192,8 @@ class RemeshModule final : public Module {
     p.push_back(spec("cleanup", ParameterType::Bool, true, "clean the dual mesh up: valence-3 vertices, needles, flips, smoothing, repairs (--no-cleanup keeps the raw dual mesh)"));
     p.push_back(spec("tetmesh", ParameterType::Path, nullptr,
                      "then tet-mesh the remeshed model with default settings and write it here (.mesh .vtu .msh)"));
+    p.back().output = true;
+    p.back().extensions = writable_volume_extensions();
     return p;
   }
 
@@ -132,14 +201,28 @@ class RemeshModule final : public Module {
     if (!context.model) throw ModelError("remesh: no model");
     warn_about_region_signs(*context.model, context.log);
     SeedOptions options;
+    std::string asked;  // the option that sets the resolution, for the memory estimate
+    double seed_count = 0.0;
     if (parameters.has("seeds")) {
       options.num_seeds = static_cast<int>(parameters.get_int("seeds"));
+      seed_count = options.num_seeds;
+      asked = "--seeds " + std::to_string(options.num_seeds);
     } else if (parameters.has("edge-length")) {
       options.edge_length = parameters.get_double("edge-length");
       if (!(options.edge_length > 0.0)) throw ParameterError("parameter --edge-length: must be positive");
+      seed_count = context.model->area() /
+                   (std::sqrt(3.0) / 2.0 * options.edge_length * options.edge_length);
+      char text[96];
+      std::snprintf(text, sizeof text, "--edge-length %g (%.3g seeds)", options.edge_length,
+                    seed_count);
+      asked = text;
     } else {
       throw ParameterError("remesh: give --edge-length or --seeds");
     }
+    require_memory(
+        context,
+        seed_count * kBytesPerSeed + context.model->num_triangles() * kBytesPerInputTriangle,
+        "remesh " + asked);
     options.optimizer.max_iterations = static_cast<int>(parameters.get_int("iterations"));
     options.optimizer.kind = optimizer_from_string(parameters.get_string("optimizer"));
     options.optimizer.gradient_threshold = parameters.get_double("gradient-threshold");
@@ -250,26 +333,40 @@ class RemeshModule final : public Module {
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 
-    // Crossing triangles or holes left by the clean-up make the output an invalid structural
-    // model (what `voroseal check` reports as errors): it is still written, to be looked at, but
-    // the verdict is invalid (exit code 1; a study records the step as invalid), so that scripts
-    // notice. Without the clean-up (the raw dual mesh, asked for) nothing is claimed.
-    const bool valid = !remesh_options.clean_up ||
-                       (result.cleanup.intersections_left == 0 && result.cleanup.holes_left == 0);
-    if (remesh_options.clean_up) report["valid"] = valid;
-    if (!valid) context.exit_code = std::max(context.exit_code, 1);
-
+    // One verdict, `voroseal check`'s, on the model as written (cracks show only when the file
+    // is read back); nothing invalid goes to --output, --keep-invalid is where to look at it.
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
-    if (parameters.has("output")) {
-      const std::string out = parameters.get_string("output");
-      write_model(*context.model, out, WriteOptions{{context.input_path}});
+    const WriteOptions write{{context.input_path}};
+    const std::string out =
+        parameters.has("output") ? parameters.get_string("output") : std::string();
+    std::string text;
+    ValidityReport verdict;
+    if (!out.empty()) {
+      text = model_text(*context.model, out, write);
+      verdict = written_verdict(text, out);
+    } else {
+      verdict = check_model(*context.model);
+    }
+    const bool valid = verdict.valid();
+    report["valid"] = valid;
+    report["validity"] = verdict_json(verdict);
+    if (valid && !out.empty()) {
+      write_text(text, out, write);
       context.log.info("remesh: wrote " + out);
     }
-    if (!valid)
-      context.log.error("remesh: the output is not a valid model (" +
-                        std::to_string(result.cleanup.intersections_left) + " intersecting triangle pairs, " +
-                        std::to_string(result.cleanup.holes_left) +
-                        " holes)" + (parameters.has("output") ? "; written for inspection" : ""));
+    if (!valid) {
+      context.exit_code = std::max(context.exit_code, 1);
+      std::string kept;
+      if (parameters.has("keep-invalid")) {
+        const std::string path = parameters.get_string("keep-invalid");
+        write_model(*context.model, path, write);
+        kept = "; written to " + path + " for inspection";
+      } else if (!out.empty()) {
+        kept = "; nothing written to " + out + " (--keep-invalid PATH writes it for inspection)";
+      }
+      context.log.error("remesh: the remeshed model is not valid (what `voroseal check` finds): " +
+                        defects_text(verdict) + kept);
+    }
     // TetGen on crossing surfaces fails, and through a hole it fills two regions as one: the
     // volume mesh of an invalid model would only hide what went wrong.
     if (parameters.has("tetmesh") && !valid) {

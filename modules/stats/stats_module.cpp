@@ -2,12 +2,13 @@
 // seed paper), with the Hausdorff distance to a reference. Text table on stdout, or one JSON
 // object with --json; the same object goes to context.report["stats"].
 #include <cstdio>
-
 #include <filesystem>
 
 #include "framework/core/error.h"
 #include "framework/geometry/volume_quality.h"
+#include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
+#include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
 #include "io/model_io.h"
 #include "modules/stats/model_statistics.h"
@@ -15,6 +16,10 @@
 namespace voroseal {
 
 namespace {
+
+// Memory of one sample point of the Hausdorff distance (its position, the triangle it lies on
+// and its distance): both surfaces are sampled.
+constexpr double kBytesPerSample = 64.0;
 
 // The tetrahedral mesh in `path`, or null when the file holds none (or is not a volume format).
 std::shared_ptr<const VolumeMesh> volume_in(const std::string& path) {
@@ -47,6 +52,7 @@ nlohmann::json volume_json(const VolumeMesh& mesh, const VolumeQuality& q) {
           {"max_radius_edge", q.max_radius_edge},
           {"mean_radius_edge", q.mean_radius_edge},
           {"nonpositive_tets", q.nonpositive_tets},
+          {"repeated_vertex_tets", q.repeated_vertex_tets},
           {"total_volume", q.total_volume},
           {"triangles_not_in_tets", q.nonconforming_triangles},
           {"region_volumes", regions}};
@@ -56,10 +62,14 @@ std::string volume_table(const VolumeMesh& mesh, const VolumeQuality& q) {
   std::string out;
   char line[256];
   std::snprintf(line, sizeof line,
-                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; radius-edge max %.3g "
-                "mean %.3g; %ld flat or inverted tets; %ld surface triangles not on a tet\n",
-                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg, q.max_radius_edge,
-                q.mean_radius_edge, q.nonpositive_tets, q.nonconforming_triangles);
+                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; "
+                "radius-edge max %.3g "
+                "mean %.3g; %ld flat or inverted tets; %ld tets with a repeated vertex; %ld "
+                "surface triangles "
+                "not on a tet\n",
+                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg,
+                q.max_radius_edge, q.mean_radius_edge, q.nonpositive_tets, q.repeated_vertex_tets,
+                q.nonconforming_triangles);
   out += line;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     if (q.region_tets[r] == 0) continue;
@@ -82,8 +92,10 @@ class StatsModule : public Module {
     ParameterSpec json{"json", ParameterType::Bool, false, "print one JSON object instead of the table"};
     ParameterSpec samples{"samples", ParameterType::Int, 200000, "sample points per surface for the distance"};
     samples.min = 1;
+    samples.max = kMaxCount;
     ParameterSpec seed{"seed", ParameterType::Int, 1, "seed of the random sample points"};
     seed.min = 0;
+    seed.max = kMaxRandomSeed;
     return {ref, json, samples, seed};
   }
 
@@ -95,6 +107,9 @@ class StatsModule : public Module {
     ModelStatistics reference_statistics;
     const bool with_ref = parameters.has("ref");
     if (with_ref) {
+      const long samples = parameters.get_int("samples");
+      require_memory(context, 2.0 * kBytesPerSample * static_cast<double>(samples),
+                     "stats --samples " + std::to_string(samples));
       const std::string path = parameters.get_string("ref");
       const StructuralModel reference = read_model(path);
       reference_statistics = measure_model(reference);

@@ -1,9 +1,11 @@
 #include "modules/tetmesh/tetgen_run.h"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "framework/core/error.h"
+#include "framework/core/signal_cleanup.h"
 #include "modules/tetmesh/stdout_capture.h"
 
 namespace voroseal {
@@ -189,9 +192,32 @@ int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::st
 
   std::FILE* result = std::tmpfile();
   std::fflush(stderr);
-  const pid_t child = result != nullptr ? ::fork() : -1;
+  const pid_t parent = ::getpid();
+  pid_t child = -1;
+  int child_slot = -1;
+  if (result != nullptr) {
+    // The child gets a process group of its own, registered before any signal can be
+    // handled, so that the parent's signal handler kills it and nothing else.
+    SignalBlock block;
+    child = ::fork();
+    if (child > 0) {
+      ::setpgid(child, child);  // also done by the child: whichever runs first
+      child_slot = register_child_group(child);
+    }
+  }
   if (child == 0) {
-    // Child: TetGen only, then leave without running any destructor or atexit handler.
+    // Child: TetGen only, then leave without running any destructor or atexit handler. It
+    // dies with its parent, even one killed by SIGKILL (PR_SET_PDEATHSIG), and leaves at once
+    // when the parent is already gone.
+    ::setpgid(0, 0);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) std::_Exit(121);
+    ::signal(SIGINT, SIG_DFL);
+    ::signal(SIGTERM, SIG_DFL);
+    ::signal(SIGHUP, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);  // SignalBlock's mask was inherited
     ::dup2(STDOUT_FILENO, STDERR_FILENO);  // assertion messages join the captured text
     const int code = run_in_process(behavior, in, out);
     std::fflush(stdout);
@@ -208,6 +234,7 @@ int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::st
   int status = 0;
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
+  unregister_child_group(child_slot);
   printed = capture.finish();
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
     try {

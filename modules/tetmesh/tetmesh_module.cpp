@@ -9,6 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/geometry/volume_quality.h"
 #include "framework/host/module.h"
+#include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
 #include "framework/model/contact_wedges.h"
 #include "io/model_io.h"
@@ -53,9 +54,12 @@ class TetmeshModule : public Module {
     ParameterSpec output{"output", ParameterType::Path, nullptr,
                          "volume mesh file (.mesh, .vtu, .msh, .node/.ele); not written when absent"};
     output.short_name = "o";
+    output.output = true;
+    output.extensions = writable_volume_extensions();
     ParameterSpec quality{"quality", ParameterType::Double, 1.5,
                           "maximum radius-edge ratio TetGen refines to (switch q); 0 turns refinement off"};
     quality.min = 0.0;
+    quality.max = kMaxRadiusEdge;
     ParameterSpec dihedral{"min-dihedral", ParameterType::Double, 10.0,
                            "minimum dihedral angle in degrees TetGen refines to (q<ratio>/<angle>); 0: "
                            "TetGen's default (none)"};
@@ -64,6 +68,7 @@ class TetmeshModule : public Module {
     ParameterSpec volume{"max-volume", ParameterType::Double, nullptr,
                          "maximum tet volume in model units^3 (switch a); no bound when absent"};
     volume.min = 0.0;
+    volume.max = kMaxModelVolume;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
                        "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles "
                        "(bisected only by --refine-surface-below)"};

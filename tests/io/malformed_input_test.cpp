@@ -168,6 +168,8 @@ TEST(MalformedInput, Model3d) {
       {"short key triangle line", replace(kModel3d, 8, "  1 0"), 8, "needs x y z"},
       {"long key triangle line", replace(kModel3d, 8, "  1 0 0 0"), 8, "needs x y z"},
       {"truncated key triangle", head(kModel3d, 7), 7, "file ends inside the key triangle"},
+      {"key triangle not in the surface", replace(kModel3d, 9, "  0 2 0"), 7,
+       "the key triangle of TFACE 1 is no triangle of TSurf 's'"},
       {"REGION with unknown TFACE", replace(kModel3d, 11, "  +5 0"), 11, "unknown TFACE 5"},
       {"REGION list not terminated", replace(kModel3d, 11, "  +1"), 12, "ending with 0, found 'REGION'"},
       {"REGION list with a word", replace(kModel3d, 11, "  +a 0"), 11, "found '+a'"},

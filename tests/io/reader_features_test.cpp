@@ -62,7 +62,8 @@ std::string model3d(const std::string& key1, const std::string& key2) {
 }
 
 TEST(Model3dReader, KeyTriangleOrientsPatchesAndGroupsFollowTfaceNumbers) {
-  const SurfaceSoup s = read_text_as("m.ml", model3d("  0 0 0\n  0 1 0\n  1 0 0\n", "  9 9 9\n  8 8 8\n  7 7 7\n"));
+  const SurfaceSoup s =
+      read_text_as("m.ml", model3d("  0 0 0\n  0 1 0\n  1 0 0\n", "  0 0 5\n  1 0 5\n  0 1 5\n"));
   EXPECT_TRUE(s.has_explicit_parts);
   ASSERT_EQ(s.groups.size(), 2u);
   // Groups in TFACE-number order: TFACE 1 (of s) first although listed second.
@@ -70,7 +71,8 @@ TEST(Model3dReader, KeyTriangleOrientsPatchesAndGroupsFollowTfaceNumbers) {
   EXPECT_EQ(s.groups[0].kind, SurfaceKind::Fault);     // from the TFACE type
   EXPECT_EQ(s.groups[1].kind, SurfaceKind::Boundary);  // "none": GEOLOGICAL_TYPE
   ASSERT_EQ(s.triangles.size(), 3u);
-  // Patch 1 was reversed (its key triangle is TRGL 1 2 3 backwards), patch 2 kept.
+  // Patch 1 was reversed (its key triangle is TRGL 1 2 3 backwards), patch 2 kept (its key
+  // is its triangle as given).
   EXPECT_EQ(s.triangles[0], (Triangle{0, 2, 1}));
   EXPECT_EQ(s.triangles[1], (Triangle{1, 2, 3}));
   EXPECT_EQ(s.triangles[2], (Triangle{4, 5, 6}));

@@ -165,10 +165,11 @@ TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
   EXPECT_THROW(run({{"zip-pinch-outs", true}, {"zip-wedge", 0.0}}), ParameterError);
 }
 
-TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
+TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsNotWrittenAndNamesItsDefects) {
   // A fault crossing the horizon without a contact (the input itself is not conformal): the
-  // remeshed surfaces cross where the input's do, which no clean-up can undo. The output is
-  // written, to be looked at, and the verdict is invalid (exit code 1), as `check` would say.
+  // remeshed surfaces cross where the input's do, which no clean-up can undo. The verdict is
+  // `check`'s on the model as written: invalid (exit code 1), and nothing is written at
+  // --output; --keep-invalid is where it goes to be looked at.
   test::ModuleHarness harness(voroseal_register_remesh, "remesh");
   SurfaceSoup soup = test::lattice_box(6, true);
   test::append(soup, test::floating_fault(6, 0.5, 0.3, 0.7));
@@ -184,8 +185,13 @@ TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsWrittenWithAnInvalidVerdict) {
   EXPECT_GT(r.at("cleanup").at("intersections_left").get<int>(), 0);
   EXPECT_FALSE(r.at("valid").get<bool>());
   EXPECT_EQ(harness.context.exit_code, 1);
-  EXPECT_TRUE(std::filesystem::exists(out));
-  std::filesystem::remove(out);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const nlohmann::json& failed = r.at("validity").at("failed");
+  ASSERT_FALSE(failed.empty());
+  bool crossings = false;
+  for (const nlohmann::json& f : failed)
+    crossings = crossings || (f.at("check") == "self_intersections" && !f.at("examples").empty());
+  EXPECT_TRUE(crossings) << failed.dump();
   // Nor is a volume mesh made of it (the harness has no registry: asking for it would throw).
   EXPECT_TRUE(r.at("tetmesh_skipped").get<bool>());
   EXPECT_FALSE(std::filesystem::exists(tets));
