@@ -24,7 +24,7 @@ constexpr double kQPerFix = 0.3;    // and the sum of Q there gives up at most t
 void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int contact_steps, int surface_steps,
                      std::vector<int>& nb, std::vector<Vec3>& out) {
   out.clear();
-  const VertexFeature f = e.s_.features[v];
+  const VertexFeature f = e.mesh().features[v];
   const Vec3 old = e.p(v);
   out.push_back(old);
   e.neighbours(v, nb);
@@ -39,7 +39,7 @@ void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int co
   }
   Vec3 normal = Vec3::Zero();
   for (int t : e.star(v)) {
-    if (e.s_.triangle_part[t] != f.id) return;
+    if (e.mesh().triangle_part[t] != f.id) return;
     normal += e.normal(t);
   }
   if (!(normal.norm() > 0.0)) return;
@@ -82,16 +82,16 @@ class MoveChoice {
 
 std::vector<int> sharp_triangles(Editor& e) {
   std::vector<int> sharp;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
     if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < kSharpDeg)
       sharp.push_back(static_cast<int>(t));
   return sharp;
 }
 
 int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
-  std::vector<char> wanted(e.s_.vertices.size(), 0);
+  std::vector<char> wanted(e.mesh().vertices.size(), 0);
   for (int t : sharp_triangles(e))
-    for (int v : e.s_.triangles[t]) wanted[v] = 1;
+    for (int v : e.mesh().triangles[t]) wanted[v] = 1;
   int moves = 0;
   std::vector<int> nb;
   std::vector<Vec3> candidates;
@@ -113,7 +113,7 @@ int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
       choice.take(r);
       best = at.x;
     }
-    if (!choice.found() || (e.tolerance_ > 0.0 && !stays_close(e, projector, v, best))) continue;
+    if (!choice.found() || (e.tolerance() > 0.0 && !stays_close(e, projector, v, best))) continue;
     if (move_checked(e, v, best)) ++moves;
   }
   return moves;
@@ -135,7 +135,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
   };
   for (int t : sharp_triangles(e)) {
     if (!e.alive(t) || e.min_angle(t) >= kSharpDeg) continue;
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
       if (along_contact(e, u, v) || along_contact(e, v, u)) continue;
@@ -162,7 +162,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
       }
       if (!choice.found()) continue;
       // Each measured with the other in place: the triangles of edge (u, v) approximately.
-      if (e.tolerance_ > 0.0 &&
+      if (e.tolerance() > 0.0 &&
           (!stays_close(e, projector, u, best_u.x) || !stays_close(e, projector, v, best_v.x)))
         continue;
       if (transact(e, ring, false, [&](std::vector<int>& after) {

@@ -11,10 +11,9 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, c
                        const CleanupOptions& options) {
   CleanupReport report;
   Editor e(surface, input);
-  e.projector_ = &projector;
-  e.tolerance_ = options.fidelity_tolerance;
+  e.set_projector(&projector);
   const ContactArcs arcs(input);
-  e.arcs_ = &arcs;
+  e.set_fidelity(options.fidelity_tolerance, &arcs);
   // Folds along contacts and needles first: they are most of what the mesh building leaves
   // invalid, and d_min merges need valid surroundings to be accepted.
   report.needles_collapsed += collapse_needles(e, options.needle_angle_deg);
