@@ -13,6 +13,7 @@
 #include "framework/geometry/triangle_quality.h"
 #include "framework/model/structural_model.h"
 #include "framework/model/triangle_topology.h"
+#include "modules/remesh/cleanup_thresholds.h"
 #include "modules/remesh/contact_arcs.h"
 #include "modules/remesh/remeshed_surface.h"
 #include "modules/remesh/surface_projection.h"
@@ -41,11 +42,10 @@ struct Violations {
   int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
 };
 
-// The input's contacts meet at wedges of several degrees; thinner wedges are made by the remesh.
-constexpr double kFoldDeg = 5.0;
-// Triangles with a larger angle, or a smaller one, are as bad as degenerate ones.
-constexpr double kCapDeg = 170.0;
-constexpr double kNeedleDeg = 5.0;
+// The census's bars (see CleanupThresholds).
+constexpr double kFoldDeg = CleanupThresholds::kFoldDeg;
+constexpr double kCapDeg = CleanupThresholds::kCapDeg;
+constexpr double kNeedleDeg = CleanupThresholds::kSliverDeg;
 
 // The surface with vertex -> triangle incidence, edited in place. Edits happen inside
 // transactions (begin / commit / rollback) so that an edit can be tried, measured and undone.
@@ -85,6 +85,9 @@ class Editor {
     tolerance_ = tolerance;
     arcs_ = arcs;
   }
+  // The angles and factors the steps use (defaults unless set).
+  const CleanupThresholds& thresholds() const { return thresholds_; }
+  void set_thresholds(const CleanupThresholds& thresholds) { thresholds_ = thresholds; }
 
   // Contact vertices put at a bend of their contact by the fidelity refinement: they move only
   // where their contact edges keep within the tolerance (keeps_fidelity()).
@@ -417,6 +420,7 @@ class Editor {
   const SurfaceProjector* projector_ = nullptr;
   double tolerance_ = 0.0;
   const ContactArcs* arcs_ = nullptr;
+  CleanupThresholds thresholds_;
   std::vector<Change> journal_;
   std::vector<size_t> marks_;  // the journal's length where each open transaction began
   TriangleGrid grid_;

@@ -285,7 +285,8 @@ int collapse_needles(Editor& e, double needle_angle, bool strict, const std::vec
     const Triangle f = e.mesh().triangles[t];
     for (int i : e.edges_by_length(f)) {
       const int a = f[i], b = f[(i + 1) % 3];
-      if (try_collapse(e, a, b, 0.0, 12.0, strict) || try_collapse(e, b, a, 0.0, 12.0, strict)) {
+      const double floor = e.thresholds().collapse_floor_deg;
+      if (try_collapse(e, a, b, 0.0, floor, strict) || try_collapse(e, b, a, 0.0, floor, strict)) {
         ++collapsed;
         break;
       }
@@ -321,7 +322,7 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
   // Across a fold a flip changes the shape: allowed only to mend a bad triangle (an angle below
   // 30 degrees), when the new edge stays within the fidelity tolerance of the part.
   if (!strict && n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) {
-    if (before >= 30.0 || e.projector() == nullptr || e.tolerance() <= 0.0) return false;
+    if (before >= e.thresholds().sharp_deg || e.projector() == nullptr || e.tolerance() <= 0.0) return false;
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
     if (e.projector()->distance_to_part(e.mesh().triangle_part[t1], middle) > e.tolerance()) return false;
   }

@@ -12,7 +12,8 @@
 
 namespace voroseal::cleanup {
 
-void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report) {
+void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature,
+                          CleanupCounts& report) {
   if (min_feature <= 0.0) return;
   // The region pair of each part (the universe is -1) and how many parts with triangles
   // separate each pair.
@@ -203,7 +204,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
   }
 }
 
-int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report) {
+int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupCounts& report) {
   constexpr double kJoinFloorDeg = 6.0;
   if (min_feature <= 0.0 || max_wedge_deg <= 0.0) return 0;
   const double max_wedge = max_wedge_deg * M_PI / 180.0, tan_wedge = std::tan(max_wedge);

@@ -37,7 +37,7 @@ bool same_vertices(Triangle a, Triangle b) {
   return a == b;
 }
 
-void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupReport& report) {
+void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupCounts& report) {
   std::vector<std::pair<int, int>> pairs;
   for (const auto& [a, b] : census.crossings)
     if (e.alive(a) && e.alive(b) && same_vertices(e.mesh().triangles[a], e.mesh().triangles[b])) pairs.emplace_back(a, b);
@@ -78,13 +78,14 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
 
 }  // namespace
 
-void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options, CleanupReport& report) {
+void repair(Editor& e, const SurfaceProjector& projector, const CleanupThresholds& thresholds,
+            CleanupCounts& report) {
   Editor::Census census = e.census();
   report.intersections_found = census.count.crossings;
-  const double cos_flat = std::cos(options.flip_flatness_deg * M_PI / 180.0);
+  const double cos_flat = std::cos(thresholds.flip_flatness_deg * M_PI / 180.0);
   std::vector<int> verts, nb;
   Vec3 target;
-  for (int round = 0; round < options.intersection_rounds && census.count.total() > 0; ++round) {
+  for (int round = 0; round < thresholds.intersection_rounds && census.count.total() > 0; ++round) {
     const std::vector<int> involved = census.triangles(e);
     // The vertices of the involved triangles and their neighbours.
     verts.clear();
@@ -150,7 +151,6 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
   // surfaces that still separate other regions around it): one triangle of the pair goes, the
   // one whose removal leaves the surface more valid. (The output model would keep only one of
   // the two anyway, as a duplicate; here the choice is checked and the counts are right.)
-  bool dropped = false;
   for (const auto& [a, b] : census.crossings) {
     if (!e.alive(a) || !e.alive(b) || !same_vertices(e.mesh().triangles[a], e.mesh().triangles[b])) continue;
     for (int t : {b, a}) {
@@ -163,18 +163,10 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
             return true;
           })) {
         ++report.coincident_removed;
-        dropped = true;
         break;
       }
     }
   }
-  if (dropped) census = e.census();
-  report.intersections_left = census.count.crossings;
-  report.holes_left = census.count.holes;
-  report.leaks_left = census.count.leaks;
-  report.degenerate_left = census.count.degenerate;
-  report.pinches_left = census.count.pinches;
-  report.folds_left = census.count.folds;
 }
 
 }  // namespace voroseal::cleanup

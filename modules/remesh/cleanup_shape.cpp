@@ -92,7 +92,7 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
 
 }  // namespace
 
-void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only) {
+int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only) {
   std::vector<Vec3> start = e.mesh().vertices;
   std::vector<char> moved(e.mesh().vertices.size(), 0);
   Vec3 target, x;
@@ -122,6 +122,7 @@ void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char
     }
   }
   e.rebuild_grid();
+  return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
 }
 
 double ring_min_angle(Editor& e, int v, const Vec3& x) {
@@ -300,6 +301,7 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
 }
 
 int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_deg) {
+  const CleanupThresholds& bars = e.thresholds();
   int collapsed = 0;
   std::vector<int> around;
   auto sharpest = [&](const std::vector<int>& tris, int& count) {
@@ -332,7 +334,7 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
     for (int i : e.edges_by_length(f)) {
       const int a = f[i], b = f[(i + 1) % 3];
       for (const auto& [u, v] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
-        if (done || !collapse_allowed(e, u, v, 0.0, 12.0, false)) continue;
+        if (done || !collapse_allowed(e, u, v, 0.0, bars.collapse_floor_deg, false)) continue;
         e.stars({u, v}, around);
         int sharp_before = 0, sharp_after = 0;
         const double worst_before = sharpest(around, sharp_before);
@@ -341,7 +343,7 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
           collapse(e, u, v);
           after = e.star(v);
           const double worst_after = sharpest(after, sharp_after);
-          return (sharp_after < sharp_before || (sharp_after == sharp_before && worst_after > worst_before + 5.0)) &&
+          return (sharp_after < sharp_before || (sharp_after == sharp_before && worst_after > worst_before + bars.collapse_gain_deg)) &&
                  stays_faithful(gone, v);
         });
       }

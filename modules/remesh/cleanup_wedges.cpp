@@ -111,7 +111,7 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
     const Vec3 old = e.p(v);
     const double now = wedge_tets_min_dihedral(e, v, old);
     if (now >= bound_deg) continue;
-    const double floor = std::min(ring_min_angle(e, v, old), 20.0);
+    const double floor = std::min(ring_min_angle(e, v, old), e.thresholds().wedge_floor_deg);
     double best_dihedral = now + 0.25;
     Vec3 best = old;
     auto consider = [&](const Vec3& x) {

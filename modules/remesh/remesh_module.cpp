@@ -13,6 +13,7 @@
 #include "framework/host/module.h"
 #include "framework/host/registry.h"
 #include "io/model_io.h"
+#include "modules/remesh/cleanup_report_json.h"
 #include "modules/remesh/remesh.h"
 
 namespace voroseal {
@@ -222,6 +223,7 @@ class RemeshModule final : public Module {
                          {"degenerate_left", result.cleanup.degenerate_left},
                          {"pinches_left", result.cleanup.pinches_left},
                          {"folds_left", result.cleanup.folds_left}};
+    report["cleanup"]["phases"] = phases_json(result.cleanup.phases);
     report["min_feature"] = result.min_feature;
     report["sharp_points"] = result.build.sharp_points;
     const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +
