@@ -11,10 +11,11 @@ int invalid(const Violations& v) { return v.total() - v.folds; }
 
 // Counts, not kinds: a phase's edits are each checked where they are, and a phase may trade a
 // defect for another (smoothing that mends degenerate triangles and opens a leak the repair
-// closes); it may not leave more in all, nor more that make the model invalid.
+// closes). Those that make the model invalid come first: a phase may trade folds for them,
+// never the other way round.
 bool accepts(PhaseCheck check, const Violations& before, const Violations& after) {
-  if (invalid(after) > invalid(before)) return false;
-  return check == PhaseCheck::InvalidDefects || after.total() <= before.total();
+  if (invalid(after) != invalid(before)) return invalid(after) < invalid(before);
+  return check == PhaseCheck::InvalidDefects || after.folds <= before.folds;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // A phase of the clean-up: rounds of checked edits of the Editor, run to a fixed point (or a
-// bound) inside one transaction, kept only when the census of defects does not grow.
+// bound) inside one transaction, kept only when the census of defects does not grow (those that
+// make the model invalid first, then folds).
 // Internal to the remesh module (see mesh_cleanup.h, cleanup_schedule.h).
 #pragma once
 
@@ -31,7 +32,7 @@ using PhaseRound = PhaseCounts (*)(Editor&, const CleanupContext&);
 
 // What a phase may not make worse.
 enum class PhaseCheck {
-  Defects,        // no more defects in all (Violations::total()), nor more that make it invalid
+  Defects,        // fewer that make the model invalid, or as many and no more folds
   InvalidDefects  // no more that make it invalid (a fold a zip front leaves is the repair's)
 };
 

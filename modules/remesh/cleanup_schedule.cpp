@@ -21,14 +21,14 @@ std::vector<PhaseSpec> cleanup_schedule(const CleanupThresholds& t) {
   constexpr PhaseCheck kButFolds = PhaseCheck::InvalidDefects;
   return {
       // name                     round            rounds                   enabled when
-      {"topology",                topology,        1,                       always},
-      {"merges",                  merges,          1,                       always},
+      {"topology",                topology,        t.topology_rounds,       always},
+      {"merges",                  merges,          t.merge_rounds,          always},
       {"shape: smoothing",        smoothing,       t.smoothing_iterations,  always},
-      {"topology: valence 3",     valence3,        1,                       always},
-      {"merges",                  merges,          1,                       always},
+      {"topology: valence 3",     valence3,        t.topology_rounds,       always},
+      {"merges",                  merges,          t.merge_rounds,          always},
       {"shape: relaxation",       relaxation,      1,                       always},
       {"fidelity",                fidelity,        t.fidelity_rounds,       with_tolerance},
-      {"merges",                  merges,          1,                       with_tolerance},
+      {"merges",                  merges,          t.merge_rounds,          with_tolerance},
       {"shape: angles",           angles,          t.angle_passes,          always},
       {"shape: sharp collapses",  sharp_collapses, t.sharp_collapse_rounds, always},
       {"shape: angles",           angles,          t.angle_passes,          after_collapses},

@@ -1,5 +1,5 @@
 // The steps of the clean-up (mesh_cleanup.h), each a pass of checked edits of the Editor
-// (cleanup_editor.h). Internal to the remesh module: clean_up() runs them in order.
+// (cleanup_editor.h). Internal to the remesh module: the phases (cleanup_phases.h) run them.
 #pragma once
 
 #include <map>
@@ -67,7 +67,7 @@ void split(Editor& e, int u, int v, int w, std::vector<int>* added = nullptr);
 
 // Collapses u into v when collapse_allowed() and the validity of the surface gets no worse
 // (`strict`: better).
-bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0, bool strict = false);
+bool try_collapse(Editor& e, int u, int v, double merge_below, double floor_deg, bool strict);
 
 // Collapses the shortest possible edge of triangles with an angle below `needle_angle` and of
 // the folds along contacts (on_one_contact).

@@ -42,6 +42,10 @@ struct CleanupThresholds {
   double wedge_lift = 0.5;
 
   // ---- round limits (the phases stop earlier at a round without progress) ----
+  // The topology and merge phases come back later in the schedule: one round each time (run to
+  // a fixed point they changed no validity and cost some quality, docs/benchmarks.md).
+  int topology_rounds = 1;
+  int merge_rounds = 1;
   // Smoothing converges slowly and never exactly: a fixed number of Gauss-Seidel passes.
   int smoothing_iterations = 10;
   // A fidelity split is followed by flips and a smoothing pass, which may stray again: a few.

@@ -6,6 +6,7 @@
 #include "modules/remesh/cleanup_phase.h"
 #include "modules/remesh/cleanup_schedule.h"
 #include "tests/modules/remesh/remeshed_input.h"
+#include "tests/modules/remesh/synthetic_surfaces.h"
 #include "tests/support/test_models.h"
 
 namespace voroseal {
@@ -64,6 +65,62 @@ TEST(CleanupPhase, APhaseThatMakesNothingWorseIsKeptAndRunsToItsBound) {
   EXPECT_EQ(record.rounds, 3);
   EXPECT_EQ(f.kept.quality_moves, 3);
   EXPECT_FALSE(e.in_transaction());
+}
+
+// Two flat triangles of a sheet across edge (0, 1) (vertex 3 the second's apex), and a
+// degenerate triangle apart (vertices 4, 5, 6 on a line).
+struct FoldingSheet {
+  StructuralModel input = build_model(test::flat_square(1));
+  SurfaceProjector projector{input};
+  CleanupOptions options;
+  CleanupCounts kept;
+  RemeshedSurface s;
+  CleanupContext context{projector, options, options.thresholds, kept};
+  FoldingSheet() {
+    for (const Vec3& x : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0.5, -1, 0),
+                          Vec3(3, 0, 0), Vec3(4, 0, 0), Vec3(5, 0, 0)}) {
+      s.vertices.push_back(x - input.frame.origin);
+      s.features.push_back({VertexFeature::Surface, 0});
+    }
+    s.triangles = {{0, 1, 2}, {1, 0, 3}, {4, 5, 6}};
+    s.triangle_part = {0, 0, 0};
+  }
+};
+
+// Folds the second triangle back over the first (a pleat), and with `mend` lifts the middle
+// vertex of the degenerate triangle off its line.
+template <bool mend>
+PhaseCounts fold(Editor& e, const CleanupContext&) {
+  e.move(3, e.p(3) + Vec3(0, 2, 0.05));
+  if (mend) e.move(5, e.p(5) + Vec3(0, 1, 0));
+  PhaseCounts r;
+  r.counts.sharp_moves = mend ? 2 : 1;
+  return r;
+}
+
+TEST(CleanupPhase, APhaseThatOnlyAddsAFoldIsRolledBack) {
+  FoldingSheet f;
+  Editor e(f.s, f.input);
+  Violations defects = e.census().count;
+  ASSERT_EQ(defects.degenerate, 1);
+  const PhaseRecord record = run_phase(e, {"folds", fold<false>, 1, nullptr}, f.context, defects,
+                                       f.kept);
+  EXPECT_FALSE(record.kept);
+  EXPECT_EQ(record.invalid_after, record.invalid_before);
+  EXPECT_EQ(record.defects_after, record.defects_before + 1);
+  EXPECT_EQ(e.census().count.folds, 0);
+}
+
+TEST(CleanupPhase, APhaseMayTradeAFoldForAnInvalidDefect) {
+  FoldingSheet f;
+  Editor e(f.s, f.input);
+  Violations defects = e.census().count;
+  const PhaseRecord record = run_phase(e, {"mends", fold<true>, 1, nullptr}, f.context, defects,
+                                       f.kept);
+  EXPECT_TRUE(record.kept);
+  EXPECT_EQ(defects.degenerate, 0);
+  EXPECT_EQ(defects.folds, 1);
+  EXPECT_EQ(f.kept.sharp_moves, 2);
 }
 
 TEST(CleanupPhase, TheCleanUpReportsEveryPhaseItRanInScheduleOrder) {
