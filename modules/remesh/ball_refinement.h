@@ -18,8 +18,8 @@
 namespace voroseal {
 
 struct BallRefinementOptions {
-  int max_rounds = 4;      // refinement rounds (0: only measure the failures)
-  int iterations = 30;     // optimiser iterations after each round
+  int max_rounds = 3;      // refinement rounds (0: only measure the failures)
+  int iterations = 60;     // optimiser iterations after each round
   double shrink = 0.5;     // size around a failure: shrink × the size of its cell
   double gradation = 0.3;  // size growth per unit length away from a refined spot
   /// d_min: failures whose pieces are closer than this are merges, not refined. With no merge

@@ -71,6 +71,12 @@ void Editor::rollback_to(size_t mark) {
         dead_[it->index] = 1;
         for (int w : s_.triangles[it->index]) dirty_[w] = 1;
         break;
+      case Change::Feature:
+        s_.features[it->index] = it->feature;
+        break;
+      case Change::Bend:
+        bend_[it->index] = it->dead;
+        break;
     }
   }
   journal_.resize(mark);

@@ -13,6 +13,7 @@
 #include "framework/geometry/triangle_quality.h"
 #include "framework/model/structural_model.h"
 #include "framework/model/triangle_topology.h"
+#include "modules/remesh/cleanup_thresholds.h"
 #include "modules/remesh/contact_arcs.h"
 #include "modules/remesh/remeshed_surface.h"
 #include "modules/remesh/surface_projection.h"
@@ -41,11 +42,10 @@ struct Violations {
   int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
 };
 
-// The input's contacts meet at wedges of several degrees; thinner wedges are made by the remesh.
-constexpr double kFoldDeg = 5.0;
-// Triangles with a larger angle, or a smaller one, are as bad as degenerate ones.
-constexpr double kCapDeg = 170.0;
-constexpr double kNeedleDeg = 5.0;
+// The census's bars (see CleanupThresholds).
+constexpr double kFoldDeg = CleanupThresholds::kFoldDeg;
+constexpr double kCapDeg = CleanupThresholds::kCapDeg;
+constexpr double kNeedleDeg = CleanupThresholds::kSliverDeg;
 
 // The surface with vertex -> triangle incidence, edited in place. Edits happen inside
 // transactions (begin / commit / rollback) so that an edit can be tried, measured and undone.
@@ -67,22 +67,34 @@ class Editor {
     return out;
   }
 
-  RemeshedSurface& s_;
-  const StructuralModel& input_;
-  std::vector<std::pair<int, int>> part_regions_;
-  std::vector<std::vector<int>> around_;  // may hold stale entries: read through star()
-  std::vector<char> dirty_;               // around_[v] may hold stale entries
-  std::vector<char> dead_;
-  double mean_edge_ = 1.0;
-  double step_ = 0.0;  // of the file-coordinate grid, see snapped()
-  const SurfaceProjector* projector_ = nullptr;  // for flips across folds (see try_flip)
-  double tolerance_ = 0.0;                       // the fidelity tolerance
-  const ContactArcs* arcs_ = nullptr;            // the input contacts, for the fidelity tolerance
+  // ---- the surface and the input (read-only: edits go through the journaled calls below) ----
+  const RemeshedSurface& mesh() const { return s_; }
+  const StructuralModel& input() const { return input_; }
+  // The input regions on the two sides of each input part.
+  const std::vector<std::pair<int, int>>& part_regions() const { return part_regions_; }
+  double mean_edge() const { return mean_edge_; }
+
+  // ---- what some edits consult (unset: not consulted) ----
+  // For flips across folds (see try_flip).
+  const SurfaceProjector* projector() const { return projector_; }
+  void set_projector(const SurfaceProjector* projector) { projector_ = projector; }
+  // The fidelity tolerance and the input contacts' arc lengths it is measured along.
+  double tolerance() const { return tolerance_; }
+  const ContactArcs* arcs() const { return arcs_; }
+  void set_fidelity(double tolerance, const ContactArcs* arcs) {
+    tolerance_ = tolerance;
+    arcs_ = arcs;
+  }
+  // The angles and factors the steps use (defaults unless set).
+  const CleanupThresholds& thresholds() const { return thresholds_; }
+  void set_thresholds(const CleanupThresholds& thresholds) { thresholds_ = thresholds; }
+
   // Contact vertices put at a bend of their contact by the fidelity refinement: they move only
   // where their contact edges keep within the tolerance (keeps_fidelity()).
   bool is_bend(int v) const { return static_cast<size_t>(v) < bend_.size() && bend_[v] != 0; }
   void mark_bend(int v) {
     if (bend_.size() <= static_cast<size_t>(v)) bend_.resize(v + 1, 0);
+    if (in_transaction()) journal_.push_back({Change::Bend, v, Vec3::Zero(), {}, 0, bend_[v], {}});
     bend_[v] = 1;
   }
 
@@ -175,29 +187,47 @@ class Editor {
   }
 
   // ---- edits (journaled inside a transaction) ----
-  void begin() {
-    journal_.clear();
-    open_ = true;
-  }
+  // Transactions nest: a phase of the clean-up is one, and the edits inside it are too. Only
+  // the outermost commit forgets the journal; a rollback undoes its own transaction's edits.
+  void begin() { marks_.push_back(journal_.size()); }
   void commit() {
-    journal_.clear();
-    open_ = false;
+    marks_.pop_back();
+    if (marks_.empty()) journal_.clear();
   }
   void rollback() {
-    rollback_to(0);
-    open_ = false;
+    rollback_to(marks_.back());
+    commit();
   }
   // Inside a transaction: the journal's length now, and undoing the edits made since (the
   // transaction stays open), for trying edits within a larger edit that may be undone whole.
   size_t mark() const { return journal_.size(); }
-  bool in_transaction() const { return open_; }
+  bool in_transaction() const { return !marks_.empty(); }
+  // Whether the innermost transaction has changed anything yet.
+  bool changed_in_transaction() const { return !marks_.empty() && journal_.size() > marks_.back(); }
   void rollback_to(size_t mark);
   // Without `update_grid` the caller rebuilds the grid (rebuild_grid()) before the next check.
   void move(int v, const Vec3& x, bool update_grid = true) {
-    if (open_) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0});
+    if (in_transaction()) journal_.push_back({Change::Moved, v, s_.vertices[v], {}, 0, 0, {}});
     s_.vertices[v] = snapped(x);
     if (update_grid)
       for (int t : star(v)) grid_insert(t);
+  }
+  // Puts v at x as it is: no snapping, no journal, no grid update. Only to evaluate a position
+  // in place and put v back, or to put back a vertex moved (journaled) in this transaction.
+  void place(int v, const Vec3& x) { s_.vertices[v] = x; }
+  // Swaps all positions with `other` (no journal, no grid update): to evaluate another state in
+  // place, swapped back before any edit.
+  void swap_positions(std::vector<Vec3>& other) { std::swap(s_.vertices, other); }
+  // The input feature v samples (journaled).
+  void set_feature(int v, const VertexFeature& f) {
+    if (in_transaction()) journal_.push_back({Change::Feature, v, Vec3::Zero(), {}, 0, 0, s_.features[v]});
+    s_.features[v] = f;
+  }
+  // v stays where it is from now on (see VertexFeature::pinned).
+  void pin(int v) {
+    VertexFeature f = s_.features[v];
+    f.pinned = true;
+    set_feature(v, f);
   }
   void set_triangle(int t, const Triangle& f) {
     save(t);
@@ -223,7 +253,7 @@ class Editor {
       around_[v].push_back(t);
       dirty_[v] = 1;
     }
-    if (open_) journal_.push_back({Change::Added, t, Vec3::Zero(), f, part, 0});
+    if (in_transaction()) journal_.push_back({Change::Added, t, Vec3::Zero(), f, part, 0, {}});
     grid_insert(t);
     return t;
   }
@@ -324,16 +354,18 @@ class Editor {
 
  private:
   struct Change {
-    enum Kind { Moved, Changed, Added };
+    enum Kind { Moved, Changed, Added, Feature, Bend };
     Kind kind;
     int index;
     Vec3 position;
     Triangle triangle;
     int part;
-    char dead;
+    char dead;  // of a Changed triangle; of a Bend: whether v was one
+    VertexFeature feature;
   };
   void save(int t) {
-    if (open_) journal_.push_back({Change::Changed, t, Vec3::Zero(), s_.triangles[t], s_.triangle_part[t], dead_[t]});
+    if (in_transaction())
+      journal_.push_back({Change::Changed, t, Vec3::Zero(), s_.triangles[t], s_.triangle_part[t], dead_[t], {}});
   }
   void box(int t, Vec3& lo, Vec3& hi) const {
     const Triangle& f = s_.triangles[t];
@@ -377,8 +409,20 @@ class Editor {
   // Holes, leaks and folds on edge (a, b), see Violations.
   void edge_violations(int a, int b, Violations& out);
 
+  RemeshedSurface& s_;
+  const StructuralModel& input_;
+  std::vector<std::pair<int, int>> part_regions_;
+  std::vector<std::vector<int>> around_;  // may hold stale entries: read through star()
+  std::vector<char> dirty_;               // around_[v] may hold stale entries
+  std::vector<char> dead_;
+  double mean_edge_ = 1.0;
+  double step_ = 0.0;  // of the file-coordinate grid, see snapped()
+  const SurfaceProjector* projector_ = nullptr;
+  double tolerance_ = 0.0;
+  const ContactArcs* arcs_ = nullptr;
+  CleanupThresholds thresholds_;
   std::vector<Change> journal_;
-  bool open_ = false;
+  std::vector<size_t> marks_;  // the journal's length where each open transaction began
   TriangleGrid grid_;
   std::vector<int> mark_, seen_;
   int epoch_ = 0, query_epoch_ = 0;

@@ -13,17 +13,17 @@ namespace voroseal::cleanup {
 int remove_valence3(Editor& e) {
   int removed = 0;
   std::vector<int> tmp, before;
-  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
-    if (e.s_.features[v].kind != VertexFeature::Surface) continue;
+    if (e.mesh().features[v].kind != VertexFeature::Surface) continue;
     const std::vector<int> tris = e.star(v);
     if (tris.size() != 3) continue;
-    const int part = e.s_.triangle_part[tris[0]];
-    if (e.s_.triangle_part[tris[1]] != part || e.s_.triangle_part[tris[2]] != part) continue;
+    const int part = e.mesh().triangle_part[tris[0]];
+    if (e.mesh().triangle_part[tris[1]] != part || e.mesh().triangle_part[tris[2]] != part) continue;
     // Rotate each triangle to start at v: (v, a, b). A closed fan chains a->b->c->a.
     std::array<std::pair<int, int>, 3> fan;
     for (int i = 0; i < 3; ++i) {
-      const Triangle& f = e.s_.triangles[tris[i]];
+      const Triangle& f = e.mesh().triangles[tris[i]];
       const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
       fan[i] = {f[(k + 1) % 3], f[(k + 2) % 3]};
     }
@@ -42,7 +42,7 @@ int remove_valence3(Editor& e) {
     e.edge_triangles(a, b, tmp);
     bool exists = false;
     for (int t : tmp)
-      if (Editor::opposite(e.s_.triangles[t], a, b) == c) exists = true;
+      if (Editor::opposite(e.mesh().triangles[t], a, b) == c) exists = true;
     if (exists || normal_of(e.p(a), e.p(b), e.p(c)).norm() == 0.0) continue;
     const bool done = transact(e, tris, false, [&](std::vector<int>& after) {
       for (int t : tris) e.kill(t);
@@ -55,14 +55,14 @@ int remove_valence3(Editor& e) {
 }
 
 bool opposite_flip(Editor& e, int v, int t, OppositeFlip& flip) {
-  const Triangle& f = e.s_.triangles[t];
+  const Triangle& f = e.mesh().triangles[t];
   const int k = f[0] == v ? 0 : f[1] == v ? 1 : 2;
   const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
   std::vector<int> edge;
   e.edge_triangles(x, y, edge);
-  if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != e.s_.triangle_part[edge[1]]) return false;
+  if (edge.size() != 2 || e.mesh().triangle_part[edge[0]] != e.mesh().triangle_part[edge[1]]) return false;
   flip.out = edge[0] == t ? edge[1] : edge[0];
-  flip.o = Editor::opposite(e.s_.triangles[flip.out], x, y);
+  flip.o = Editor::opposite(e.mesh().triangles[flip.out], x, y);
   if (flip.o == v) return false;
   flip.g1 = {v, x, flip.o};
   flip.g2 = {v, flip.o, y};
@@ -74,7 +74,7 @@ bool opposite_flip(Editor& e, int v, int t, OppositeFlip& flip) {
 }
 
 void apply_flip(Editor& e, int t, const OppositeFlip& flip, std::vector<int>* added) {
-  const int part = e.s_.triangle_part[t];
+  const int part = e.mesh().triangle_part[t];
   e.kill(t);
   e.kill(flip.out);
   const int t1 = e.add_triangle(flip.g1, part), t2 = e.add_triangle(flip.g2, part);
@@ -83,17 +83,17 @@ void apply_flip(Editor& e, int t, const OppositeFlip& flip, std::vector<int>* ad
 
 int raise_valence3_on_contacts(Editor& e) {
   int raised = 0;
-  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     const std::vector<int>& ring = e.star(v);
     if (ring.size() < 4) continue;
     // Inside one part the fan goes (remove_valence3); a surface vertex may also sit where
     // another part ends (its free border), which the fan must keep.
     bool several_parts = false;
-    for (int t : ring) several_parts = several_parts || e.s_.triangle_part[t] != e.s_.triangle_part[ring[0]];
+    for (int t : ring) several_parts = several_parts || e.mesh().triangle_part[t] != e.mesh().triangle_part[ring[0]];
     if (!several_parts) continue;
     std::map<int, std::vector<int>> by_part;
-    for (int t : ring) by_part[e.s_.triangle_part[t]].push_back(t);
+    for (int t : ring) by_part[e.mesh().triangle_part[t]].push_back(t);
     for (const auto& [part, fan] : by_part) {
       if (fan.size() != 3 || e.closed_fan_size(v, part) != 3) continue;
       // Best flip of a side of the fan that is not on a contact (opposite_flip()).
@@ -124,8 +124,8 @@ namespace {
 // vertex joins another contact or a corner, which merges the two features there. A repair
 // (`repairing`) may also move a pinned contact point.
 bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, bool repairing = false) {
-  const VertexFeature& fu = e.s_.features[u];
-  const VertexFeature& fv = e.s_.features[v];
+  const VertexFeature& fu = e.mesh().features[u];
+  const VertexFeature& fv = e.mesh().features[v];
   if (fu.pinned && !repairing) return false;
   switch (fu.kind) {
     case VertexFeature::Corner:
@@ -141,7 +141,7 @@ bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, 
       return false;
     case VertexFeature::Surface: {
       for (int t : e.star(u))
-        if (e.s_.triangle_part[t] != fu.id) return false;
+        if (e.mesh().triangle_part[t] != fu.id) return false;
       return true;
     }
   }
@@ -161,7 +161,7 @@ bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_
   std::vector<int> common;
   std::set_intersection(nu.begin(), nu.end(), nv.begin(), nv.end(), std::back_inserter(common));
   std::vector<int> apex;
-  for (int t : edge) apex.push_back(Editor::opposite(e.s_.triangles[t], u, v));
+  for (int t : edge) apex.push_back(Editor::opposite(e.mesh().triangles[t], u, v));
   std::sort(apex.begin(), apex.end());
   apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
   // (Several triangles of the edge may share an apex: the slivers a contact gets in every part
@@ -169,7 +169,7 @@ bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_
   if (common != apex) return false;
   for (int t : e.star(u)) {
     if (std::find(edge.begin(), edge.end(), t) != edge.end()) continue;
-    Triangle f = e.s_.triangles[t];
+    Triangle f = e.mesh().triangles[t];
     const Vec3 before = e.normal(t);
     for (int& w : f)
       if (w == u) w = v;
@@ -186,7 +186,7 @@ void collapse(Editor& e, int u, int v) {
   e.edge_triangles(u, v, edge);
   for (int t : edge) e.kill(t);
   for (int t : std::vector<int>(e.star(u))) {
-    Triangle f = e.s_.triangles[t];
+    Triangle f = e.mesh().triangles[t];
     for (int& w : f)
       if (w == u) w = v;
     e.set_triangle(t, f);
@@ -194,14 +194,14 @@ void collapse(Editor& e, int u, int v) {
 }
 
 int shared_contact(const Editor& e, int u, int v) {
-  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  const VertexFeature &fu = e.mesh().features[u], &fv = e.mesh().features[v];
   if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Contact) return fu.id == fv.id ? fu.id : -1;
   if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner)
     return e.corner_ends_contact(fv.id, fu.id) ? fu.id : -1;
   if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner)
     return e.corner_ends_contact(fu.id, fv.id) ? fv.id : -1;
   if (fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) {
-    for (int c : e.input_.corners[fu.id].contacts)
+    for (int c : e.input().corners[fu.id].contacts)
       if (e.corner_ends_contact(fv.id, c)) return c;
   }
   return -1;
@@ -211,7 +211,7 @@ int line_contact(Editor& e, const SurfaceProjector& projector,
                  const std::map<std::vector<int>, std::vector<int>>& contacts_by_parts, int u, int v) {
   std::vector<int> edge, parts;
   e.edge_triangles(u, v, edge);
-  for (int t : edge) parts.push_back(e.s_.triangle_part[t]);
+  for (int t : edge) parts.push_back(e.mesh().triangle_part[t]);
   std::sort(parts.begin(), parts.end());
   parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
   const auto it = contacts_by_parts.find(parts);
@@ -230,8 +230,8 @@ void split(Editor& e, int u, int v, int w, std::vector<int>* added) {
   std::vector<int> tris;
   e.edge_triangles(u, v, tris);
   for (int t : tris) {
-    const Triangle f = e.s_.triangles[t];
-    const int part = e.s_.triangle_part[t];
+    const Triangle f = e.mesh().triangles[t];
+    const int part = e.mesh().triangle_part[t];
     int k = 0;
     while (!((f[k] == u && f[(k + 1) % 3] == v) || (f[k] == v && f[(k + 1) % 3] == u))) ++k;
     const int a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
@@ -261,10 +261,10 @@ namespace {
 bool on_one_contact(const Editor& e, const Triangle& f) {
   int contact = -1;
   for (int v : f)
-    if (e.s_.features[v].kind == VertexFeature::Contact) contact = e.s_.features[v].id;
+    if (e.mesh().features[v].kind == VertexFeature::Contact) contact = e.mesh().features[v].id;
   if (contact < 0) return false;
   for (int v : f) {
-    const VertexFeature& fv = e.s_.features[v];
+    const VertexFeature& fv = e.mesh().features[v];
     const bool ok = (fv.kind == VertexFeature::Contact && fv.id == contact) ||
                     (fv.kind == VertexFeature::Corner && e.corner_ends_contact(fv.id, contact));
     if (!ok) return false;
@@ -276,16 +276,17 @@ bool on_one_contact(const Editor& e, const Triangle& f) {
 
 int collapse_needles(Editor& e, double needle_angle, bool strict, const std::vector<int>* only) {
   int collapsed = 0;
-  const size_t n = e.s_.triangles.size();
+  const size_t n = e.mesh().triangles.size();
   for (size_t k = 0; k < (only ? only->size() : n); ++k) {
     const int t = only ? (*only)[k] : static_cast<int>(k);
     if (!e.alive(t)) continue;
-    if (e.min_angle(t) >= needle_angle && !on_one_contact(e, e.s_.triangles[t])) continue;
+    if (e.min_angle(t) >= needle_angle && !on_one_contact(e, e.mesh().triangles[t])) continue;
     // Shortest edge first: a needle has one, a cap is handled by flips.
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i : e.edges_by_length(f)) {
       const int a = f[i], b = f[(i + 1) % 3];
-      if (try_collapse(e, a, b, 0.0, 12.0, strict) || try_collapse(e, b, a, 0.0, 12.0, strict)) {
+      const double floor = e.thresholds().collapse_floor_deg;
+      if (try_collapse(e, a, b, 0.0, floor, strict) || try_collapse(e, b, a, 0.0, floor, strict)) {
         ++collapsed;
         break;
       }
@@ -298,15 +299,15 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
   // The triangles of edge (u, v), without allocating: this runs for every edge after every pass.
   int edge[2], n = 0;
   for (int t : e.star(u))
-    if (Editor::has(e.s_.triangles[t], v) && n++ < 2) edge[n - 1] = t;
+    if (Editor::has(e.mesh().triangles[t], v) && n++ < 2) edge[n - 1] = t;
   if (n != 2) return false;
   int t1 = edge[0], t2 = edge[1];
-  if (e.s_.triangle_part[t1] != e.s_.triangle_part[t2]) return false;
-  if (!has_directed_edge(e.s_.triangles[t1], u, v)) std::swap(t1, t2);
+  if (e.mesh().triangle_part[t1] != e.mesh().triangle_part[t2]) return false;
+  if (!has_directed_edge(e.mesh().triangles[t1], u, v)) std::swap(t1, t2);
   // t1 = (u, v, c) directed; a consistent t2 is (v, u, d).
-  if (!has_directed_edge(e.s_.triangles[t1], u, v) || !has_directed_edge(e.s_.triangles[t2], v, u)) return false;
-  const int c = Editor::opposite(e.s_.triangles[t1], u, v);
-  const int d = Editor::opposite(e.s_.triangles[t2], u, v);
+  if (!has_directed_edge(e.mesh().triangles[t1], u, v) || !has_directed_edge(e.mesh().triangles[t2], v, u)) return false;
+  const int c = Editor::opposite(e.mesh().triangles[t1], u, v);
+  const int d = Editor::opposite(e.mesh().triangles[t2], u, v);
   if (c == d || e.edge_exists(c, d)) return false;
   const Vec3 n1 = e.normal(t1), n2 = e.normal(t2);
   // On a flat quad the diagonal facing angles that sum to less than 180 degrees is the Delaunay
@@ -321,9 +322,9 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
   // Across a fold a flip changes the shape: allowed only to mend a bad triangle (an angle below
   // 30 degrees), when the new edge stays within the fidelity tolerance of the part.
   if (!strict && n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) {
-    if (before >= 30.0 || e.projector_ == nullptr || e.tolerance_ <= 0.0) return false;
+    if (before >= e.thresholds().sharp_deg || e.projector() == nullptr || e.tolerance() <= 0.0) return false;
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
-    if (e.projector_->distance_to_part(e.s_.triangle_part[t1], middle) > e.tolerance_) return false;
+    if (e.projector()->distance_to_part(e.mesh().triangle_part[t1], middle) > e.tolerance()) return false;
   }
   const Triangle g1{c, u, d}, g2{d, v, c};
   const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
@@ -332,11 +333,11 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
   // around it (see raise_valence3_on_contacts).
   if (!strict)
     for (int w : {u, v})
-      if (e.star(w).size() > 4 && e.closed_fan_size(w, e.s_.triangle_part[t1]) == 4) return false;
+      if (e.star(w).size() > 4 && e.closed_fan_size(w, e.mesh().triangle_part[t1]) == 4) return false;
   const Vec3 m1 = normal_of(e.p(c), e.p(u), e.p(d)), m2 = normal_of(e.p(d), e.p(v), e.p(c));
   const Vec3 ref = n1 + n2;
   if (m1.dot(ref) <= 0 || m2.dot(ref) <= 0) return false;
-  const int part = e.s_.triangle_part[t1];
+  const int part = e.mesh().triangle_part[t1];
   return transact(e, {t1, t2}, strict, [&](std::vector<int>& after_tris) {
     e.kill(t1);
     e.kill(t2);
@@ -348,9 +349,9 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
 int flip_edges(Editor& e, double flatness_deg) {
   const double cos_flat = std::cos(flatness_deg * M_PI / 180.0);
   int flips = 0;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t) {
     for (int i = 0; i < 3 && e.alive(static_cast<int>(t)); ++i) {
-      const Triangle f = e.s_.triangles[t];
+      const Triangle f = e.mesh().triangles[t];
       if (try_flip(e, f[i], f[(i + 1) % 3], cos_flat, false)) ++flips;
     }
   }
@@ -358,8 +359,8 @@ int flip_edges(Editor& e, double flatness_deg) {
 }
 
 bool along_contact(Editor& e, int v, int w) {
-  const int contact = e.s_.features[v].id;
-  const VertexFeature& fw = e.s_.features[w];
+  const int contact = e.mesh().features[v].id;
+  const VertexFeature& fw = e.mesh().features[w];
   const bool on = (fw.kind == VertexFeature::Contact && fw.id == contact) ||
                   (fw.kind == VertexFeature::Corner && e.corner_ends_contact(fw.id, contact));
   return on && e.is_line_edge(v, w);
@@ -376,7 +377,7 @@ bool move_checked(Editor& e, int v, const Vec3& x) {
 
 bool unfolded_with(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b) {
   for (int t : tris) {
-    const Triangle& tri = e.s_.triangles[t];
+    const Triangle& tri = e.mesh().triangles[t];
     Vec3 q[3];
     for (int i = 0; i < 3; ++i) q[i] = tri[i] == a.v ? a.x : tri[i] == b.v ? b.x : e.p(tri[i]);
     const Vec3 n = normal_of(q[0], q[1], q[2]);
@@ -390,7 +391,7 @@ bool ring_unfolded_at(Editor& e, int v, const Vec3& x) { return unfolded_with(e,
 
 bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& target, double step,
                    Vec3& result) {
-  const VertexFeature f = e.s_.features[v];
+  const VertexFeature f = e.mesh().features[v];
   const Vec3 old = e.p(v);
   const Vec3 moved = old + step * (target - old);
   result = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
@@ -427,7 +428,7 @@ void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>&
   OppositeFlip flip;
   for (int round = 0; round < 2; ++round)
     for (int t : std::vector<int>(e.star(v))) {
-      if (!e.alive(t) || e.s_.triangle_part[t] != part || e.min_angle(t) >= floor_deg) continue;
+      if (!e.alive(t) || e.mesh().triangle_part[t] != part || e.min_angle(t) >= floor_deg) continue;
       if (!opposite_flip(e, v, t, flip) || e.edge_exists(v, flip.o)) continue;
       if (flip.min_angle <= std::min(e.min_angle(t), e.min_angle(flip.out))) continue;
       apply_flip(e, t, flip);

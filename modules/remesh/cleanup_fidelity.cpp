@@ -21,7 +21,7 @@ namespace {
 int fidelity_contact(const Editor& e, int u, int v) {
   const int c = shared_contact(e, u, v);
   if (c >= 0) return c;
-  const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v];
+  const VertexFeature &fu = e.mesh().features[u], &fv = e.mesh().features[v];
   if (fu.kind == VertexFeature::Contact && fv.kind == VertexFeature::Corner) return fu.id;
   if (fv.kind == VertexFeature::Contact && fu.kind == VertexFeature::Corner) return fv.id;
   return -1;
@@ -31,14 +31,14 @@ int fidelity_contact(const Editor& e, int u, int v) {
 
 int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance) {
   if (tolerance <= 0.0) return 0;
-  const ContactArcs& arcs = *e.arcs_;
+  const ContactArcs& arcs = *e.arcs();
   int splits = 0;
-  const size_t n = e.s_.triangles.size();
+  const size_t n = e.mesh().triangles.size();
   std::vector<int> tris;
   for (size_t ti = 0; ti < n; ++ti) {
     const int t = static_cast<int>(ti);
     if (!e.alive(t)) continue;
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     bool done = false;
     for (int i = 0; i < 3 && !done; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
@@ -51,18 +51,18 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
       if (x < 0 || distance <= tolerance) continue;
       // The bend is kept by a vertex there. Close to an end (a third of the edge), that end moves
       // there rather than leave a short edge (needles in every part along the contact).
-      const Vec3& bend = e.input_.vertices[x];
+      const Vec3& bend = e.input().vertices[x];
       const double len = (e.p(v) - e.p(u)).norm();
       int end = -1;
       for (int w : {u, v}) {
-        const VertexFeature& fw = e.s_.features[w];
+        const VertexFeature& fw = e.mesh().features[w];
         if (fw.kind == VertexFeature::Contact && fw.id == c && !fw.pinned && (bend - e.p(w)).norm() < len / 3) end = w;
       }
       if (end >= 0) {
         const std::vector<int> ring = e.star(end);
         bool folds = false;
         for (int r : ring) {
-          Triangle f2 = e.s_.triangles[r];
+          Triangle f2 = e.mesh().triangles[r];
           Vec3 q[3];
           for (int i2 = 0; i2 < 3; ++i2) q[i2] = f2[i2] == end ? bend : e.p(f2[i2]);
           folds = folds || normal_of(q[0], q[1], q[2]).dot(e.normal(r)) <= 0;
@@ -72,7 +72,7 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
               after = ring;
               return true;
             })) {
-          e.s_.features[end].pinned = true;
+          e.pin(end);
           e.mark_bend(end);
           ++splits;
           done = true;
@@ -80,13 +80,13 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
         }
       }
       if (try_split(e, u, v, bend, {VertexFeature::Contact, c, true})) {
-        e.mark_bend(static_cast<int>(e.s_.vertices.size()) - 1);  // the vertex try_split added
+        e.mark_bend(static_cast<int>(e.mesh().vertices.size()) - 1);  // the vertex try_split added
         ++splits;
         done = true;
       }
     }
     if (done || !e.alive(t)) continue;
-    const int part = e.s_.triangle_part[t];
+    const int part = e.mesh().triangle_part[t];
     const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
     if ((projector.on_part(part, centroid) - centroid).norm() <= tolerance) continue;
     // Split the longest edge inside the part, at its middle moved onto the part.
@@ -95,7 +95,7 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
     for (int i = 0; i < 3; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
       e.edge_triangles(u, v, tris);
-      if (tris.size() != 2 || e.s_.triangle_part[tris[0]] != e.s_.triangle_part[tris[1]]) continue;
+      if (tris.size() != 2 || e.mesh().triangle_part[tris[0]] != e.mesh().triangle_part[tris[1]]) continue;
       const double len = (e.p(u) - e.p(v)).squaredNorm();
       if (len > longest) {
         longest = len;
@@ -109,9 +109,9 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
   return splits;
 }
 
-FidelityGuard::FidelityGuard(Editor& e, int v, const std::vector<int>& neighbours) : arcs_(e.arcs_) {
-  const VertexFeature& f = e.s_.features[v];
-  if (arcs_ == nullptr || e.tolerance_ <= 0.0 || f.kind != VertexFeature::Contact) return;
+FidelityGuard::FidelityGuard(Editor& e, int v, const std::vector<int>& neighbours) : arcs_(e.arcs()) {
+  const VertexFeature& f = e.mesh().features[v];
+  if (arcs_ == nullptr || e.tolerance() <= 0.0 || f.kind != VertexFeature::Contact) return;
   contact_ = f.id;
   const double at = arcs_->position(contact_, e.p(v));
   int sides = 0;
@@ -123,7 +123,7 @@ FidelityGuard::FidelityGuard(Editor& e, int v, const std::vector<int>& neighbour
     side.at = arcs_->position(contact_, side.end);
     double before = 0.0;
     arcs_->farthest_between(contact_, at, side.at, e.p(v), side.end, &before);
-    side.bound = std::max(e.tolerance_, before);
+    side.bound = std::max(e.tolerance(), before);
   }
   // A bend has a contact edge on each side; with one side unchecked (a neighbour that is a
   // corner merged away, Fig. 11b) it could leave its bend for good.
@@ -144,7 +144,7 @@ bool FidelityGuard::allows(const Vec3& x) const {
 
 int refine_toward_input(Editor& e, double tolerance) {
   if (tolerance <= 0.0) return 0;
-  const StructuralModel& in = e.input_;
+  const StructuralModel& in = e.input();
   std::vector<int> part_of(in.vertices.size(), -1);
   for (size_t p = 0; p < in.parts.size(); ++p)
     for (int v : in.parts[p].model_vertex) part_of[v] = part_of[v] == -1 ? static_cast<int>(p) : -2;
@@ -152,13 +152,13 @@ int refine_toward_input(Editor& e, double tolerance) {
     for (int v : c.vertices) part_of[v] = -2;
   std::vector<Triangle> tris;
   std::vector<int> index;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
     if (e.alive(static_cast<int>(t))) {
-      tris.push_back(e.s_.triangles[t]);
+      tris.push_back(e.mesh().triangles[t]);
       index.push_back(static_cast<int>(t));
     }
   if (tris.empty()) return 0;
-  const TriangleSetDistance distance(e.s_.vertices, tris);
+  const TriangleSetDistance distance(e.mesh().vertices, tris);
   std::vector<std::pair<double, int>> far;
   for (size_t v = 0; v < in.vertices.size(); ++v) {
     if (part_of[v] < 0) continue;
@@ -166,7 +166,7 @@ int refine_toward_input(Editor& e, double tolerance) {
     if (d2 > tolerance * tolerance) far.emplace_back(std::sqrt(d2), static_cast<int>(v));
   }
   std::sort(far.rbegin(), far.rend());
-  std::vector<char> split_once(e.s_.triangles.size(), 0);
+  std::vector<char> split_once(e.mesh().triangles.size(), 0);
   int inserted = 0;
   for (const auto& [d, v] : far) {
     const Vec3& x = in.vertices[v];
@@ -174,18 +174,18 @@ int refine_toward_input(Editor& e, double tolerance) {
     // Still far (an earlier insertion may have come close)?
     int best = -1;
     double best_d2 = std::numeric_limits<double>::infinity();
-    const Vec3 reach = Vec3::Constant(2.0 * d + e.mean_edge_);
+    const Vec3 reach = Vec3::Constant(2.0 * d + e.mean_edge());
     e.candidates(x - reach, x + reach, [&](int t) {
-      const Triangle& f = e.s_.triangles[t];
+      const Triangle& f = e.mesh().triangles[t];
       const double d2 = squared_distance_to_triangle(x, e.p(f[0]), e.p(f[1]), e.p(f[2]));
       if (d2 < tolerance * tolerance) best_d2 = -1;  // close enough now, whichever part
-      if (best_d2 >= 0 && e.s_.triangle_part[t] == part && d2 < best_d2) {
+      if (best_d2 >= 0 && e.mesh().triangle_part[t] == part && d2 < best_d2) {
         best_d2 = d2;
         best = t;
       }
     });
     if (best_d2 < 0 || best < 0 || (best < static_cast<int>(split_once.size()) && split_once[best])) continue;
-    const Triangle f = e.s_.triangles[best];
+    const Triangle f = e.mesh().triangles[best];
     const int w = e.add_vertex(x, {VertexFeature::Surface, part, true});
     if (transact(e, {best}, false, [&](std::vector<int>& after) {
           e.kill(best);

@@ -12,19 +12,20 @@
 
 namespace voroseal::cleanup {
 
-void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report) {
+void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature,
+                          CleanupCounts& report) {
   if (min_feature <= 0.0) return;
   // The region pair of each part (the universe is -1) and how many parts with triangles
   // separate each pair.
   auto pair_of = [&](int part) {
-    const auto [plus, minus] = e.part_regions_[part];
+    const auto [plus, minus] = e.part_regions()[part];
     return std::make_pair(std::min(plus, minus), std::max(plus, minus));
   };
   std::map<std::pair<int, int>, int> separating;
   {
-    std::vector<char> has_triangles(e.input_.parts.size(), 0);
-    for (size_t t = 0; t < e.s_.triangles.size(); ++t)
-      if (e.alive(static_cast<int>(t))) has_triangles[e.s_.triangle_part[t]] = 1;
+    std::vector<char> has_triangles(e.input().parts.size(), 0);
+    for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
+      if (e.alive(static_cast<int>(t))) has_triangles[e.mesh().triangle_part[t]] = 1;
     for (size_t part = 0; part < has_triangles.size(); ++part)
       if (has_triangles[part]) ++separating[pair_of(static_cast<int>(part))];
   }
@@ -52,18 +53,18 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
     return !e.corner_ends_contact(c.id, k.id);
   };
   std::map<std::vector<int>, std::vector<int>> contacts_by_parts;
-  for (size_t c = 0; c < e.input_.contacts.size(); ++c)
-    contacts_by_parts[e.input_.contacts[c].parts].push_back(static_cast<int>(c));
+  for (size_t c = 0; c < e.input().contacts.size(); ++c)
+    contacts_by_parts[e.input().contacts[c].parts].push_back(static_cast<int>(c));
   std::vector<Candidate> candidates;
-  std::vector<int> part_triangles(e.input_.parts.size(), 0);
-  for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+  std::vector<int> part_triangles(e.input().parts.size(), 0);
+  for (size_t ti = 0; ti < e.mesh().triangles.size(); ++ti) {
     const int t = static_cast<int>(ti);
     if (!e.alive(t)) continue;
-    ++part_triangles[e.s_.triangle_part[t]];
-    const Triangle f = e.s_.triangles[t];
+    ++part_triangles[e.mesh().triangle_part[t]];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       const int u = f[i], v = f[(i + 1) % 3], w = f[(i + 2) % 3];
-      const VertexFeature &fu = e.s_.features[u], &fv = e.s_.features[v], &fw = e.s_.features[w];
+      const VertexFeature &fu = e.mesh().features[u], &fv = e.mesh().features[v], &fw = e.mesh().features[w];
       const double len = (e.p(u) - e.p(v)).norm();
       if (u < v && apart(fu, fv) && !(fu.kind == VertexFeature::Corner && fv.kind == VertexFeature::Corner) &&
           len < min_feature)
@@ -99,7 +100,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
   {
     std::map<std::pair<int, int>, int> first_at_edge;
     for (int i = 0; i < n; ++i) {
-      const Triangle& f = e.s_.triangles[candidates[i].t];
+      const Triangle& f = e.mesh().triangles[candidates[i].t];
       for (int k = 0; k < 3; ++k) {
         const std::pair<int, int> key{std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3])};
         auto [it, inserted] = first_at_edge.emplace(key, i);
@@ -137,7 +138,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
       auto spare = [&](int a, int b) {
         e.edge_triangles(a, b, edge);
         std::map<int, int> dying;  // part -> its triangles on the edge
-        for (int t : edge) ++dying[e.s_.triangle_part[t]];
+        for (int t : edge) ++dying[e.mesh().triangle_part[t]];
         std::vector<int> last;
         for (const auto& [part, k] : dying) {
           if (lost[part] + k < part_triangles[part] ||
@@ -161,14 +162,14 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
           int from = u, into = v;
           if (!collapse_allowed(e, from, into, min_feature, 0.0, false)) std::swap(from, into);
           if (!collapse_allowed(e, from, into, min_feature, 0.0, false) || !spare(u, v)) continue;
-          merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.s_.features[u], e.s_.features[v]}});
+          merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.mesh().features[u], e.mesh().features[v]}});
           collapse(e, from, into);
           kept.push_back(into);
           continue;
         }
         // A strip triangle, if it is still there.
-        if (!e.alive(c.t) || !Editor::has(e.s_.triangles[c.t], c.u) || !Editor::has(e.s_.triangles[c.t], c.v) ||
-            !Editor::has(e.s_.triangles[c.t], c.w))
+        if (!e.alive(c.t) || !Editor::has(e.mesh().triangles[c.t], c.u) || !Editor::has(e.mesh().triangles[c.t], c.v) ||
+            !Editor::has(e.mesh().triangles[c.t], c.w))
           continue;
         const Vec3 d = e.p(c.v) - e.p(c.u);
         const double s = std::clamp((e.p(c.w) - e.p(c.u)).dot(d) / d.squaredNorm(), 0.0, 1.0);
@@ -181,7 +182,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
           kept.push_back(x);
           continue;
         }
-        merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.s_.features[c.u], e.s_.features[c.w]}});
+        merged.push_back({FeatureMerge::CloseFeatures, -1, e.p(into), {e.mesh().features[c.u], e.mesh().features[c.w]}});
         collapse(e, from, into);
         kept.push_back(into);
       }
@@ -203,27 +204,27 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
   }
 }
 
-int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report) {
+int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupCounts& report) {
   constexpr double kJoinFloorDeg = 6.0;
   if (min_feature <= 0.0 || max_wedge_deg <= 0.0) return 0;
   const double max_wedge = max_wedge_deg * M_PI / 180.0, tan_wedge = std::tan(max_wedge);
   std::vector<FanBlade> fan;
   auto on_free_border = [&](int v) {
-    const VertexFeature& f = e.s_.features[v];
-    return f.kind == VertexFeature::Contact && e.input_.contacts[f.id].is_free_border();
+    const VertexFeature& f = e.mesh().features[v];
+    return f.kind == VertexFeature::Contact && e.input().contacts[f.id].is_free_border();
   };
   auto on_part = [&](int w, int part) {
     for (int t : e.star(w))
-      if (e.s_.triangle_part[t] == part) return true;
+      if (e.mesh().triangle_part[t] == part) return true;
     return false;
   };
   std::vector<std::pair<int, int>> border;  // border edges (a, v), both ways
   std::vector<int> edge;
   auto collect = [&]() {
     border.clear();
-    for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+    for (size_t ti = 0; ti < e.mesh().triangles.size(); ++ti) {
       if (!e.alive(static_cast<int>(ti))) continue;
-      const Triangle& f = e.s_.triangles[ti];
+      const Triangle& f = e.mesh().triangles[ti];
       for (int i = 0; i < 3; ++i) {
         const int a = f[i], v = f[(i + 1) % 3];
         e.edge_triangles(a, v, edge);
@@ -238,7 +239,7 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
   auto free_edges_off = [&](int a, int v, int part) -> const std::vector<int>& {
     others.clear();
     for (int t : e.star(v))
-      for (int b : e.s_.triangles[t]) {
+      for (int b : e.mesh().triangles[t]) {
         if (b == v || b == a || on_part(b, part)) continue;
         e.edge_triangles(v, b, edge);
         if (edge.size() == 1) others.push_back(b);
@@ -250,39 +251,39 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
   auto thin_gap_beyond = [&](int v, int b, int part) {
     double gap = std::numeric_limits<double>::infinity();
     for (int u : e.star(v))
-      if (e.s_.triangle_part[u] == part) gap = std::min(gap, std::abs(e.normal(u).normalized().dot(e.p(b) - e.p(v))));
+      if (e.mesh().triangle_part[u] == part) gap = std::min(gap, std::abs(e.normal(u).normalized().dot(e.p(b) - e.p(v))));
     return gap >= min_feature && gap < std::tan(2.0 * max_wedge) * (e.p(b) - e.p(v)).norm();
   };
 
   collect();
   int joined = 0;
   std::vector<int> candidates, before;
-  std::vector<char> joined_already(e.s_.vertices.size(), 0);
+  std::vector<char> joined_already(e.mesh().vertices.size(), 0);
   for (bool again = true; again;) {
     again = false;
     for (const auto& [a, v] : border) {
       if (!on_free_border(v) || joined_already[v]) continue;
       e.edge_triangles(a, v, edge);
       if (edge.size() != 1) continue;  // joined meanwhile
-      const int own_part = e.s_.triangle_part[edge[0]];
+      const int own_part = e.mesh().triangle_part[edge[0]];
       // The nearest of the triangles around a of the parts v is not on, and of their
       // neighbours across the edge opposite a.
       candidates.clear();
       for (int t : e.star(a)) {
-        const int part = e.s_.triangle_part[t];
+        const int part = e.mesh().triangle_part[t];
         if (part == own_part || on_part(v, part)) continue;
         candidates.push_back(t);
-        const Triangle& f = e.s_.triangles[t];
+        const Triangle& f = e.mesh().triangles[t];
         const int b = f[0] == a ? f[1] : f[1] == a ? f[2] : f[0], c = Editor::opposite(f, a, b);
         e.edge_triangles(b, c, edge);
-        if (edge.size() == 2 && e.s_.triangle_part[edge[0]] == part && e.s_.triangle_part[edge[1]] == part)
+        if (edge.size() == 2 && e.mesh().triangle_part[edge[0]] == part && e.mesh().triangle_part[edge[1]] == part)
           candidates.push_back(edge[0] == t ? edge[1] : edge[0]);
       }
       int best = -1;
       Vec3 weights = Vec3::Zero();
       double best_d2 = std::numeric_limits<double>::infinity();
       for (int t : candidates) {
-        const Triangle& f = e.s_.triangles[t];
+        const Triangle& f = e.mesh().triangles[t];
         const Vec3 w = closest_weights(e.p(v), e.p(f[0]), e.p(f[1]), e.p(f[2]));
         const double d2 = (e.p(v) - (w[0] * e.p(f[0]) + w[1] * e.p(f[1]) + w[2] * e.p(f[2]))).squaredNorm();
         if (d2 < best_d2) {
@@ -292,7 +293,7 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
         }
       }
       if (best < 0 || best_d2 >= min_feature * min_feature) continue;
-      const Triangle f = e.s_.triangles[best];
+      const Triangle f = e.mesh().triangles[best];
       double span = (e.p(v) - e.p(a)).norm();
       for (int i = 0; i < 3; ++i) span = std::max(span, (e.p(f[i]) - e.p(f[(i + 1) % 3])).norm());
       if (std::sqrt(best_d2) >= tan_wedge * span) continue;
@@ -315,7 +316,7 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
         const Vec3 pq = e.p(q) - e.p(p);
         x = e.p(p) + std::clamp((e.p(v) - e.p(p)).dot(pq) / pq.squaredNorm(), 0.0, 1.0) * pq;
       }
-      const int part = e.s_.triangle_part[best];
+      const int part = e.mesh().triangle_part[best];
       if (free_edges_off(a, v, part).empty()) continue;
       std::vector<int> touched{a, v, f[0], f[1], f[2]};
       e.stars(touched, before);
@@ -330,21 +331,21 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
           for (int i = 0; i < 3; ++i) e.add_triangle({f[i], f[(i + 1) % 3], v}, part);
         }
         e.edge_triangles(a, v, edge);
-        if (std::none_of(edge.begin(), edge.end(), [&](int t) { return e.s_.triangle_part[t] == part; })) {
+        if (std::none_of(edge.begin(), edge.end(), [&](int t) { return e.mesh().triangle_part[t] == part; })) {
           // v landed next to a's triangles: flip the edge of one of them facing a, beyond which v is.
           OppositeFlip flip;
           int t1 = -1;
           for (int t : e.star(a))
-            if (t1 < 0 && e.s_.triangle_part[t] == part && opposite_flip(e, a, t, flip) && flip.o == v) t1 = t;
+            if (t1 < 0 && e.mesh().triangle_part[t] == part && opposite_flip(e, a, t, flip) && flip.o == v) t1 = t;
           if (t1 < 0) return false;
-          for (int w : e.s_.triangles[t1]) touched.push_back(w);
+          for (int w : e.mesh().triangles[t1]) touched.push_back(w);
           apply_flip(e, t1, flip);
         }
         flip_around(e, v, part, kJoinFloorDeg, touched);
         // No needle: the part's triangles at v have no angle below kJoinFloorDeg, v's own no
         // smaller one than before.
         for (int t : e.star(v))
-          if (e.min_angle(t) < (e.s_.triangle_part[t] == part ? kJoinFloorDeg : own_floor)) return false;
+          if (e.min_angle(t) < (e.mesh().triangle_part[t] == part ? kJoinFloorDeg : own_floor)) return false;
         for (int b : std::vector<int>(free_edges_off(a, v, part)))
           if (thin_gap_beyond(v, b, part)) return false;
         // The part must leave the new contact at more than the wedge (a tip lying along the part,
@@ -357,10 +358,10 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
         return true;
       });
       if (!done) continue;
-      e.s_.features[v].pinned = true;
+      e.pin(v);
       joined_already[v] = 1;
       report.merges.push_back(
-          {FeatureMerge::CloseFeatures, -1, e.p(v), {e.s_.features[v], {VertexFeature::Surface, part}}});
+          {FeatureMerge::CloseFeatures, -1, e.p(v), {e.mesh().features[v], {VertexFeature::Surface, part}}});
       ++joined;
       again = true;
     }

@@ -17,14 +17,14 @@ bool recover_edge(Editor& e, int a, int b) {
   std::vector<int> edge;
   for (int t : std::vector<int>(e.star(a))) {
     if (!e.alive(t)) continue;
-    const Triangle& f = e.s_.triangles[t];
+    const Triangle& f = e.mesh().triangles[t];
     const int k = f[0] == a ? 0 : f[1] == a ? 1 : 2;
     const int x = f[(k + 1) % 3], y = f[(k + 2) % 3];
     if (x == b || y == b) continue;
     e.edge_triangles(x, y, edge);
-    if (edge.size() != 2 || e.s_.triangle_part[edge[0]] != e.s_.triangle_part[edge[1]]) continue;
+    if (edge.size() != 2 || e.mesh().triangle_part[edge[0]] != e.mesh().triangle_part[edge[1]]) continue;
     const int other = edge[0] == t ? edge[1] : edge[0];
-    if (Editor::opposite(e.s_.triangles[other], x, y) != b) continue;
+    if (Editor::opposite(e.mesh().triangles[other], x, y) != b) continue;
     if (try_flip(e, x, y, -1.0, true)) return true;
   }
   return false;
@@ -37,10 +37,10 @@ bool same_vertices(Triangle a, Triangle b) {
   return a == b;
 }
 
-void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupReport& report) {
+void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupCounts& report) {
   std::vector<std::pair<int, int>> pairs;
   for (const auto& [a, b] : census.crossings)
-    if (e.alive(a) && e.alive(b) && same_vertices(e.s_.triangles[a], e.s_.triangles[b])) pairs.emplace_back(a, b);
+    if (e.alive(a) && e.alive(b) && same_vertices(e.mesh().triangles[a], e.mesh().triangles[b])) pairs.emplace_back(a, b);
   // Patches: pairs sharing an edge.
   const int n = static_cast<int>(pairs.size());
   std::vector<int> patch(n);
@@ -48,7 +48,7 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
   std::function<int(int)> root = [&](int i) { return patch[i] == i ? i : patch[i] = root(patch[i]); };
   auto shares_edge = [&](int i, int j) {
     int shared = 0;
-    for (int v : e.s_.triangles[pairs[i].first]) shared += Editor::has(e.s_.triangles[pairs[j].first], v) ? 1 : 0;
+    for (int v : e.mesh().triangles[pairs[i].first]) shared += Editor::has(e.mesh().triangles[pairs[j].first], v) ? 1 : 0;
     return shared >= 2;
   };
   for (int i = 0; i < n; ++i)
@@ -60,7 +60,7 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
     std::vector<int> tris, verts;
     for (int i : members) {
       tris.insert(tris.end(), {pairs[i].first, pairs[i].second});
-      for (int v : e.s_.triangles[pairs[i].first]) verts.push_back(v);
+      for (int v : e.mesh().triangles[pairs[i].first]) verts.push_back(v);
     }
     bool alive = true;
     for (int t : tris) alive = alive && e.alive(t);
@@ -78,18 +78,19 @@ void remove_coincident_patches(Editor& e, const Editor::Census& census, CleanupR
 
 }  // namespace
 
-void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options, CleanupReport& report) {
+void repair(Editor& e, const SurfaceProjector& projector, const CleanupThresholds& thresholds,
+            CleanupCounts& report) {
   Editor::Census census = e.census();
   report.intersections_found = census.count.crossings;
-  const double cos_flat = std::cos(options.flip_flatness_deg * M_PI / 180.0);
+  const double cos_flat = std::cos(thresholds.flip_flatness_deg * M_PI / 180.0);
   std::vector<int> verts, nb;
   Vec3 target;
-  for (int round = 0; round < options.intersection_rounds && census.count.total() > 0; ++round) {
+  for (int round = 0; round < thresholds.intersection_rounds && census.count.total() > 0; ++round) {
     const std::vector<int> involved = census.triangles(e);
     // The vertices of the involved triangles and their neighbours.
     verts.clear();
     for (int t : involved)
-      for (int w : e.s_.triangles[t]) {
+      for (int w : e.mesh().triangles[t]) {
         verts.push_back(w);
         e.neighbours(w, nb);
         verts.insert(verts.end(), nb.begin(), nb.end());
@@ -100,7 +101,7 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
       if (smoothing_target(e, w, target)) try_move(e, projector, w, target, true);
     for (int t : involved) {
       if (!e.alive(t)) continue;
-      const Triangle f = e.s_.triangles[t];
+      const Triangle f = e.mesh().triangles[t];
       for (int i = 0; i < 3; ++i)
         if (try_flip(e, f[i], f[(i + 1) % 3], cos_flat, true)) {
           ++report.flips;
@@ -109,15 +110,15 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
     }
     for (int t : involved) {
       if (!e.alive(t)) continue;
-      const Triangle f = e.s_.triangles[t];
+      const Triangle f = e.mesh().triangles[t];
       // Features closer than the resolution may merge here, when that repairs: what is left
       // invalid is most often a feature too small for the resolution (a tiny contact loop, two
       // contacts closer than an edge).
       for (int i : e.edges_by_length(f)) {
         const int a = f[i], b = f[(i + 1) % 3];
-        const VertexFeature fa = e.s_.features[a], fb = e.s_.features[b];
+        const VertexFeature fa = e.mesh().features[a], fb = e.mesh().features[b];
         const Vec3 where = e.p(b);
-        if (try_collapse(e, a, b, e.mean_edge_, 0.0, true) || try_collapse(e, b, a, e.mean_edge_, 0.0, true)) {
+        if (try_collapse(e, a, b, e.mean_edge(), 0.0, true) || try_collapse(e, b, a, e.mean_edge(), 0.0, true)) {
           ++report.needles_collapsed;
           const bool same = fa.kind == fb.kind && fa.id == fb.id;
           const bool slide = (fa.kind == VertexFeature::Contact && fb.kind == VertexFeature::Corner &&
@@ -150,11 +151,10 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
   // surfaces that still separate other regions around it): one triangle of the pair goes, the
   // one whose removal leaves the surface more valid. (The output model would keep only one of
   // the two anyway, as a duplicate; here the choice is checked and the counts are right.)
-  bool dropped = false;
   for (const auto& [a, b] : census.crossings) {
-    if (!e.alive(a) || !e.alive(b) || !same_vertices(e.s_.triangles[a], e.s_.triangles[b])) continue;
+    if (!e.alive(a) || !e.alive(b) || !same_vertices(e.mesh().triangles[a], e.mesh().triangles[b])) continue;
     for (int t : {b, a}) {
-      const Triangle f = e.s_.triangles[t];
+      const Triangle f = e.mesh().triangles[t];
       std::vector<int> before;
       e.stars({f[0], f[1], f[2]}, before);
       if (transact(e, before, false, [&](std::vector<int>& after) {
@@ -163,18 +163,10 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& 
             return true;
           })) {
         ++report.coincident_removed;
-        dropped = true;
         break;
       }
     }
   }
-  if (dropped) census = e.census();
-  report.intersections_left = census.count.crossings;
-  report.holes_left = census.count.holes;
-  report.leaks_left = census.count.leaks;
-  report.degenerate_left = census.count.degenerate;
-  report.pinches_left = census.count.pinches;
-  report.folds_left = census.count.folds;
 }
 
 }  // namespace voroseal::cleanup

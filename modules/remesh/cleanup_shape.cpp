@@ -12,7 +12,7 @@
 namespace voroseal::cleanup {
 
 bool smoothing_target(Editor& e, int v, Vec3& target) {
-  const VertexFeature f = e.s_.features[v];
+  const VertexFeature f = e.mesh().features[v];
   if (f.kind == VertexFeature::Corner || f.pinned) return false;
   const std::vector<int>& ring = e.star(v);
   if (ring.empty()) return false;
@@ -20,8 +20,8 @@ bool smoothing_target(Editor& e, int v, Vec3& target) {
     Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero();
     double area = 0;
     for (int t : ring) {
-      if (e.s_.triangle_part[t] != f.id) return false;
-      const Triangle& tri = e.s_.triangles[t];
+      if (e.mesh().triangle_part[t] != f.id) return false;
+      const Triangle& tri = e.mesh().triangles[t];
       const Vec3 n = e.normal(t);
       const double a = 0.5 * n.norm();
       centroid += a * (e.p(tri[0]) + e.p(tri[1]) + e.p(tri[2])) / 3.0;
@@ -59,21 +59,21 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
                           const std::vector<char>& moved) {
   std::vector<int> out, tris;
   auto blame = [&](int t) {
-    for (int w : e.s_.triangles[t])
+    for (int w : e.mesh().triangles[t])
       if (moved[w]) out.push_back(w);
   };
   auto touched = [&](int t) {
-    for (int w : e.s_.triangles[t])
+    for (int w : e.mesh().triangles[t])
       if (moved[w]) return true;
     return false;
   };
   // Evaluate the old state by swapping the positions in (a cheap swap of two vectors).
-  std::swap(e.s_.vertices, before);
+  e.swap_positions(before);
   std::vector<int> guilty;
   for (const auto& [a, b] : now.crossings)
     if ((touched(a) || touched(b)) &&
-        (is_degenerate(e.s_.vertices, e.s_.triangles[a]) || is_degenerate(e.s_.vertices, e.s_.triangles[b]) ||
-         !triangles_intersect(e.s_.vertices, e.s_.triangles[a], e.s_.triangles[b])))
+        (is_degenerate(e.mesh().vertices, e.mesh().triangles[a]) || is_degenerate(e.mesh().vertices, e.mesh().triangles[b]) ||
+         !triangles_intersect(e.mesh().vertices, e.mesh().triangles[a], e.mesh().triangles[b])))
       guilty.insert(guilty.end(), {a, b});
   for (const auto& [a, b] : now.edges) {
     e.edge_triangles(a, b, tris);
@@ -82,8 +82,8 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
     if (any && e.edge_check(a, b).total() == 0) guilty.insert(guilty.end(), tris.begin(), tris.end());
   }
   for (int t : now.degenerate)
-    if (touched(t) && !is_degenerate(e.s_.vertices, e.s_.triangles[t])) guilty.push_back(t);
-  std::swap(e.s_.vertices, before);
+    if (touched(t) && !is_degenerate(e.mesh().vertices, e.mesh().triangles[t])) guilty.push_back(t);
+  e.swap_positions(before);
   for (int t : guilty) blame(t);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -92,12 +92,12 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
 
 }  // namespace
 
-void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only) {
-  std::vector<Vec3> start = e.s_.vertices;
-  std::vector<char> moved(e.s_.vertices.size(), 0);
+int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only) {
+  std::vector<Vec3> start = e.mesh().vertices;
+  std::vector<char> moved(e.mesh().vertices.size(), 0);
   Vec3 target, x;
   bool any = false;
-  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     if (only != nullptr && !(*only)[v]) continue;
     if (!smoothing_target(e, v, target)) continue;
@@ -116,18 +116,19 @@ void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char
     if (back.empty()) break;
     std::fill(changed.begin(), changed.end(), 0);
     for (int v : back) {
-      e.s_.vertices[v] = start[v];
+      e.place(v, start[v]);
       moved[v] = 0;
       changed[v] = 1;
     }
   }
   e.rebuild_grid();
+  return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
 }
 
 double ring_min_angle(Editor& e, int v, const Vec3& x) {
   double worst = 180.0;
   for (int t : e.star(v)) {
-    const Triangle& f = e.s_.triangles[t];
+    const Triangle& f = e.mesh().triangles[t];
     Vec3 q[3];
     for (int i = 0; i < 3; ++i) q[i] = f[i] == v ? x : e.p(f[i]);
     worst = std::min(worst, min_angle_deg(q[0], q[1], q[2]));
@@ -142,7 +143,7 @@ namespace {
 // the two sides of a thin strip, where the middle of the neighbours gives needles), or around
 // the vertex in its part. False when no candidate is better by `gain` degrees.
 bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double gain, Vec3& best) {
-  const VertexFeature f = e.s_.features[v];
+  const VertexFeature f = e.mesh().features[v];
   if (f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) return false;
   const std::vector<int> ring = e.star(v);
   if (ring.empty()) return false;
@@ -171,7 +172,7 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
     return found;
   }
   for (int t : ring)
-    if (e.s_.triangle_part[t] != f.id) return false;
+    if (e.mesh().triangle_part[t] != f.id) return false;
   // Toward each neighbour and away from it, in steps of its distance.
   for (int w : nb)
     for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3})
@@ -182,13 +183,13 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
 }  // namespace
 
 int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_deg) {
-  std::vector<char> wanted(e.s_.vertices.size(), 0);
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
+  std::vector<char> wanted(e.mesh().vertices.size(), 0);
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
     if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < angle_deg)
-      for (int v : e.s_.triangles[t]) wanted[v] = 1;
+      for (int v : e.mesh().triangles[t]) wanted[v] = 1;
   Vec3 x = Vec3::Zero();
   int count = 0;
-  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     if (wanted[v] && angle_target(e, projector, v, 0.5, x) && move_checked(e, v, x)) ++count;
   }
@@ -198,7 +199,7 @@ int optimize_angles(Editor& e, const SurfaceProjector& projector, double angle_d
 RingShape ring_shape(Editor& e, const std::vector<int>& tris, const Placement& a, const Placement& b) {
   RingShape r;
   for (int t : tris) {
-    const Triangle& f = e.s_.triangles[t];
+    const Triangle& f = e.mesh().triangles[t];
     Vec3 q[3];
     for (int i = 0; i < 3; ++i) q[i] = f[i] == a.v ? a.x : f[i] == b.v ? b.x : e.p(f[i]);
     double len[3];
@@ -217,35 +218,35 @@ RingShape ring_shape(Editor& e, const std::vector<int>& tris, const Placement& a
 
 bool stays_close(Editor& e, const SurfaceProjector& projector, int v, const Vec3& x) {
   for (int t : e.star(v)) {
-    const Triangle& f = e.s_.triangles[t];
-    const int part = e.s_.triangle_part[t];
+    const Triangle& f = e.mesh().triangles[t];
+    const int part = e.mesh().triangle_part[t];
     const Vec3 before = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
     const Vec3 after = before + (x - e.p(v)) / 3.0;
     const double distance = projector.distance_to_part(part, after);
-    if (distance > e.tolerance_ && distance > projector.distance_to_part(part, before)) return false;
+    if (distance > e.tolerance() && distance > projector.distance_to_part(part, before)) return false;
   }
   return true;
 }
 
 int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_below) {
-  std::vector<char> wanted(e.s_.vertices.size(), 0);
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+  std::vector<char> wanted(e.mesh().vertices.size(), 0);
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t) {
     if (!e.alive(static_cast<int>(t))) continue;
-    const Triangle& f = e.s_.triangles[t];
+    const Triangle& f = e.mesh().triangles[t];
     if (measure_triangle(e.p(f[0]), e.p(f[1]), e.p(f[2])).q < q_below)
       for (int v : f) wanted[v] = 1;
   }
   int count = 0;
   std::vector<int> nb;
-  for (size_t vi = 0; vi < e.s_.vertices.size(); ++vi) {
+  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
-    const VertexFeature f = e.s_.features[v];
+    const VertexFeature f = e.mesh().features[v];
     if (!wanted[v] || f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) continue;
     const std::vector<int> ring = e.star(v);
     if (ring.empty()) continue;
     if (f.kind == VertexFeature::Surface) {
       bool own = true;
-      for (int t : ring) own = own && e.s_.triangle_part[t] == f.id;
+      for (int t : ring) own = own && e.mesh().triangle_part[t] == f.id;
       if (!own) continue;
     }
     const Vec3 old = e.p(v);
@@ -293,13 +294,14 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     if (best == old) continue;
     // The ring keeps to the input: no triangle middle strays farther from its part than the
     // fidelity tolerance, or than it did (moves along a crease of a part cut it otherwise).
-    if (e.tolerance_ > 0.0 && !stays_close(e, projector, v, best)) continue;
+    if (e.tolerance() > 0.0 && !stays_close(e, projector, v, best)) continue;
     if (move_checked(e, v, best)) ++count;
   }
   return count;
 }
 
 int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_deg) {
+  const CleanupThresholds& bars = e.thresholds();
   int collapsed = 0;
   std::vector<int> around;
   auto sharpest = [&](const std::vector<int>& tris, int& count) {
@@ -313,26 +315,26 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
     return worst;
   };
   auto stays_faithful = [&](const Vec3& gone, int v) {
-    if (e.tolerance_ <= 0.0) return true;
+    if (e.tolerance() <= 0.0) return true;
     double nearest = std::numeric_limits<double>::infinity();
     for (int t : e.star(v)) {
-      const Triangle& f = e.s_.triangles[t];
+      const Triangle& f = e.mesh().triangles[t];
       nearest = std::min(nearest, squared_distance_to_triangle(gone, e.p(f[0]), e.p(f[1]), e.p(f[2])));
       const Vec3 middle = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
-      if (projector.distance_to_part(e.s_.triangle_part[t], middle) > e.tolerance_) return false;
+      if (projector.distance_to_part(e.mesh().triangle_part[t], middle) > e.tolerance()) return false;
     }
-    return nearest <= e.tolerance_ * e.tolerance_;
+    return nearest <= e.tolerance() * e.tolerance();
   };
-  const size_t n = e.s_.triangles.size();
+  const size_t n = e.mesh().triangles.size();
   for (size_t k = 0; k < n; ++k) {
     const int t = static_cast<int>(k);
     if (!e.alive(t) || e.min_angle(t) >= angle_deg) continue;
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     bool done = false;
     for (int i : e.edges_by_length(f)) {
       const int a = f[i], b = f[(i + 1) % 3];
       for (const auto& [u, v] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
-        if (done || !collapse_allowed(e, u, v, 0.0, 12.0, false)) continue;
+        if (done || !collapse_allowed(e, u, v, 0.0, bars.collapse_floor_deg, false)) continue;
         e.stars({u, v}, around);
         int sharp_before = 0, sharp_after = 0;
         const double worst_before = sharpest(around, sharp_before);
@@ -341,7 +343,7 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
           collapse(e, u, v);
           after = e.star(v);
           const double worst_after = sharpest(after, sharp_after);
-          return (sharp_after < sharp_before || (sharp_after == sharp_before && worst_after > worst_before + 5.0)) &&
+          return (sharp_after < sharp_before || (sharp_after == sharp_before && worst_after > worst_before + bars.collapse_gain_deg)) &&
                  stays_faithful(gone, v);
         });
       }

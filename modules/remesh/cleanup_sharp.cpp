@@ -10,11 +10,10 @@ namespace voroseal::cleanup {
 
 namespace {
 
-constexpr double kSharpDeg = 30.0;  // what is counted (RingShape::sharp)
-constexpr double kFloorDeg = 15.0;  // no triangle of a move gets sharper than this (or than the
-                                    // sharpest one there, when that one already is),
-constexpr double kGiveDeg = 5.0;    // nor by more than this sharper than the sharpest one was,
-constexpr double kQPerFix = 0.3;    // and the sum of Q there gives up at most this per triangle fixed
+// The bars of a move are CleanupThresholds' sharp_deg (what is counted, RingShape::sharp),
+// sharp_floor_deg and sharp_give_deg (how much sharper a triangle may get); the sum of Q there
+// gives up at most this per triangle fixed:
+constexpr double kQPerFix = 0.3;
 
 // Where v may go on its feature, its own position first: along its contact toward each contact
 // neighbour (`contact_steps` steps up to 0.4 of the way), or in its part toward and away from
@@ -24,7 +23,7 @@ constexpr double kQPerFix = 0.3;    // and the sum of Q there gives up at most t
 void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int contact_steps, int surface_steps,
                      std::vector<int>& nb, std::vector<Vec3>& out) {
   out.clear();
-  const VertexFeature f = e.s_.features[v];
+  const VertexFeature f = e.mesh().features[v];
   const Vec3 old = e.p(v);
   out.push_back(old);
   e.neighbours(v, nb);
@@ -39,7 +38,7 @@ void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int co
   }
   Vec3 normal = Vec3::Zero();
   for (int t : e.star(v)) {
-    if (e.s_.triangle_part[t] != f.id) return;
+    if (e.mesh().triangle_part[t] != f.id) return;
     normal += e.normal(t);
   }
   if (!(normal.norm() > 0.0)) return;
@@ -57,9 +56,11 @@ void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int co
 // the sum of Q within its allowance; among those, the fewest sharp, then the best Q.
 class MoveChoice {
  public:
-  explicit MoveChoice(const RingShape& now) : now_(now), best_(now) {
+  MoveChoice(const RingShape& now, const CleanupThresholds& bars) : now_(now), best_(now) {
     const double sharpest_deg = std::asin(std::min(1.0, now.smallest_sine)) * 180.0 / M_PI;
-    floor_sine_ = std::sin(std::min(sharpest_deg, std::max(kFloorDeg, sharpest_deg - kGiveDeg)) * M_PI / 180.0);
+    const double floor_deg =
+        std::min(sharpest_deg, std::max(bars.sharp_floor_deg, sharpest_deg - bars.sharp_give_deg));
+    floor_sine_ = std::sin(floor_deg * M_PI / 180.0);
   }
   // Whether `r` would be the best so far.
   bool better(const RingShape& r) const {
@@ -82,16 +83,16 @@ class MoveChoice {
 
 std::vector<int> sharp_triangles(Editor& e) {
   std::vector<int> sharp;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t)
-    if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < kSharpDeg)
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
+    if (e.alive(static_cast<int>(t)) && e.min_angle(static_cast<int>(t)) < e.thresholds().sharp_deg)
       sharp.push_back(static_cast<int>(t));
   return sharp;
 }
 
 int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
-  std::vector<char> wanted(e.s_.vertices.size(), 0);
+  std::vector<char> wanted(e.mesh().vertices.size(), 0);
   for (int t : sharp_triangles(e))
-    for (int v : e.s_.triangles[t]) wanted[v] = 1;
+    for (int v : e.mesh().triangles[t]) wanted[v] = 1;
   int moves = 0;
   std::vector<int> nb;
   std::vector<Vec3> candidates;
@@ -104,7 +105,7 @@ int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
     move_candidates(e, projector, v, 20, 12, nb, candidates);
     if (candidates.size() == 1) continue;
     const FidelityGuard fidelity(e, v, nb);
-    MoveChoice choice(now);
+    MoveChoice choice(now, e.thresholds());
     Vec3 best = candidates[0];
     for (size_t c = 1; c < candidates.size(); ++c) {
       const Placement at{v, candidates[c]};
@@ -113,7 +114,7 @@ int move_single_vertices(Editor& e, const SurfaceProjector& projector) {
       choice.take(r);
       best = at.x;
     }
-    if (!choice.found() || (e.tolerance_ > 0.0 && !stays_close(e, projector, v, best))) continue;
+    if (!choice.found() || (e.tolerance() > 0.0 && !stays_close(e, projector, v, best))) continue;
     if (move_checked(e, v, best)) ++moves;
   }
   return moves;
@@ -134,8 +135,8 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
     for (size_t c = 1; c < candidates.size(); ++c) out[c] = fidelity.allows(candidates[c]);
   };
   for (int t : sharp_triangles(e)) {
-    if (!e.alive(t) || e.min_angle(t) >= kSharpDeg) continue;
-    const Triangle f = e.s_.triangles[t];
+    if (!e.alive(t) || e.min_angle(t) >= e.thresholds().sharp_deg) continue;
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
       if (along_contact(e, u, v) || along_contact(e, v, u)) continue;
@@ -146,7 +147,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
       if (at_u.size() == 1 || at_v.size() == 1) continue;  // one alone is the single moves' job
       e.stars({u, v}, ring);
       const RingShape now = ring_shape(e, ring, {u, at_u[0]}, {v, at_v[0]});
-      MoveChoice choice(now);
+      MoveChoice choice(now, e.thresholds());
       Placement best_u, best_v;
       for (size_t a = 0; a < at_u.size(); ++a) {
         if (!allowed_u[a]) continue;
@@ -162,7 +163,7 @@ int move_vertex_pairs(Editor& e, const SurfaceProjector& projector) {
       }
       if (!choice.found()) continue;
       // Each measured with the other in place: the triangles of edge (u, v) approximately.
-      if (e.tolerance_ > 0.0 &&
+      if (e.tolerance() > 0.0 &&
           (!stays_close(e, projector, u, best_u.x) || !stays_close(e, projector, v, best_v.x)))
         continue;
       if (transact(e, ring, false, [&](std::vector<int>& after) {

@@ -1,5 +1,5 @@
 // The steps of the clean-up (mesh_cleanup.h), each a pass of checked edits of the Editor
-// (cleanup_editor.h). Internal to the remesh module: clean_up() runs them in order.
+// (cleanup_editor.h). Internal to the remesh module: the phases (cleanup_phases.h) run them.
 #pragma once
 
 #include <map>
@@ -67,7 +67,7 @@ void split(Editor& e, int u, int v, int w, std::vector<int>* added = nullptr);
 
 // Collapses u into v when collapse_allowed() and the validity of the surface gets no worse
 // (`strict`: better).
-bool try_collapse(Editor& e, int u, int v, double merge_below = 0.0, double floor_deg = 12.0, bool strict = false);
+bool try_collapse(Editor& e, int u, int v, double merge_below, double floor_deg, bool strict);
 
 // Collapses the shortest possible edge of triangles with an angle below `needle_angle` and of
 // the folds along contacts (on_one_contact).
@@ -131,7 +131,8 @@ void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>&
 // A part loses its last triangles this way only when another part still separates the two
 // regions it separates (a fault strip thinner than d_min between the two cut-offs of a horizon,
 // CloudSpin's Cyan_ts/3, 2 m wide), so the regions keep their neighbours.
-void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature, CleanupReport& report);
+void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature,
+                          CleanupCounts& report);
 
 // A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it, and
 // any tet mesh keeping the surfaces fills the gap with tets about as flat as the gap is thin
@@ -147,7 +148,7 @@ void merge_close_features(Editor& e, const SurfaceProjector& projector, double m
 // max_wedge beyond d_min (the gap would only move on), and when v would keep no free edge
 // toward a vertex off the part: a free border never closes entirely (that might cut a region
 // in two) and never lies along the part with both ends on it (a gap of no thickness).
-int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupReport& report);
+int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, CleanupCounts& report);
 
 // ---- shape (cleanup_shape.cpp) ----
 
@@ -160,7 +161,8 @@ bool smoothing_target(Editor& e, int v, Vec3& target);
 // triangle of their ring are made, then the moved triangles are checked at once, which is much
 // cheaper than checking every move: the vertices of triangles in a violation the pass made are
 // put back where they were, until the pass made none.
-void smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr);
+// Returns the vertices moved.
+int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr);
 
 // Smallest angle of the triangles around v with v at x.
 double ring_min_angle(Editor& e, int v, const Vec3& x);
@@ -305,6 +307,8 @@ class FidelityGuard {
 // displacements or edge flipping"): around every triangle involved in a violation, edits that
 // make the validity strictly better are kept: moving a vertex to its smoothed position, flipping
 // an edge, collapsing an edge (a needle, a fold along a contact).
-void repair(Editor& e, const SurfaceProjector& projector, const CleanupOptions& options, CleanupReport& report);
+// What is left is the census after it (see clean_up()).
+void repair(Editor& e, const SurfaceProjector& projector, const CleanupThresholds& thresholds,
+            CleanupCounts& report);
 
 }  // namespace voroseal::cleanup

@@ -33,8 +33,8 @@ void thin_wedges(Editor& e, int a, int b, std::vector<std::pair<int, int>>& out)
   for (size_t i = 0; i < fan.size(); ++i) {
     const FanBlade& lo = fan[i];
     const FanBlade& hi = fan[(i + 1) % fan.size()];
-    const int c1 = Editor::opposite(e.s_.triangles[lo.triangle], a, b);
-    const int c2 = Editor::opposite(e.s_.triangles[hi.triangle], a, b);
+    const int c1 = Editor::opposite(e.mesh().triangles[lo.triangle], a, b);
+    const int c2 = Editor::opposite(e.mesh().triangles[hi.triangle], a, b);
     if (wedge_after(fan, i) < thin && c1 != c2) out.push_back({c1, c2});
   }
 }
@@ -52,7 +52,7 @@ double wedge_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c1, const Vec3&
 int first_triangle(Editor& e, int a, int b) {
   int first = -1;
   for (int t : e.star(a))
-    if (Editor::has(e.s_.triangles[t], b) && (first < 0 || t < first)) first = t;
+    if (Editor::has(e.mesh().triangles[t], b) && (first < 0 || t < first)) first = t;
   return first;
 }
 
@@ -62,9 +62,9 @@ double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
   double worst = 180.0;
   std::vector<std::pair<int, int>> apexes;
   const Vec3 old = e.p(v);
-  e.s_.vertices[v] = x;  // evaluated in place, put back below
+  e.place(v, x);  // evaluated in place, put back below
   for (int t : std::vector<int>(e.star(v))) {
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       const int a = f[i], b = f[(i + 1) % 3];
       if (!e.is_line_edge(a, b)) continue;
@@ -73,7 +73,7 @@ double wedge_tets_min_dihedral(Editor& e, int v, const Vec3& x) {
         worst = std::min(worst, min_dihedral_angle_deg(e.p(a), e.p(b), e.p(c1), e.p(c2)));
     }
   }
-  e.s_.vertices[v] = old;
+  e.place(v, old);
   return worst;
 }
 
@@ -84,9 +84,9 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
   std::vector<std::pair<int, int>> apexes;
   // The wedge tets below the bound by apex, {apex, a, b, other apex}: for the lifts below.
   std::vector<std::array<int, 4>> lifts;
-  for (size_t t = 0; t < e.s_.triangles.size(); ++t) {
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t) {
     if (!e.alive(static_cast<int>(t))) continue;
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       // Each edge once: from its triangle of least index.
       const int a = f[i], b = f[(i + 1) % 3];
@@ -106,12 +106,12 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
   int moved = 0;
   std::vector<int> nb;
   for (int v : wanted) {
-    const VertexFeature f = e.s_.features[v];
+    const VertexFeature f = e.mesh().features[v];
     if (f.kind == VertexFeature::Corner || f.pinned) continue;
     const Vec3 old = e.p(v);
     const double now = wedge_tets_min_dihedral(e, v, old);
     if (now >= bound_deg) continue;
-    const double floor = std::min(ring_min_angle(e, v, old), 20.0);
+    const double floor = std::min(ring_min_angle(e, v, old), e.thresholds().wedge_floor_deg);
     double best_dihedral = now + 0.25;
     Vec3 best = old;
     auto consider = [&](const Vec3& x) {

@@ -21,8 +21,8 @@ int side_contact_degree(Editor& e, int v, int part_p, int part_q) {
     e.edge_triangles(v, w, tris);
     bool p = false, q = false;
     for (int t : tris) {
-      p = p || e.s_.triangle_part[t] == part_p;
-      q = q || e.s_.triangle_part[t] == part_q;
+      p = p || e.mesh().triangle_part[t] == part_p;
+      q = q || e.mesh().triangle_part[t] == part_q;
     }
     degree += p && q;
   }
@@ -40,7 +40,7 @@ int other_region(std::pair<int, int> regions, int c) { return regions.first == c
 // A vertex the zip closed at stays there (a corner is held anyway): no later move projects it
 // back onto the input contact, which no longer runs there.
 void hold(Editor& e, int v) {
-  if (e.s_.features[v].kind != VertexFeature::Corner) e.s_.features[v].pinned = true;
+  if (e.mesh().features[v].kind != VertexFeature::Corner) e.pin(v);
 }
 
 // The triangles of the parts of tp and tq around v that share their three vertices pairwise (the
@@ -49,11 +49,11 @@ void hold(Editor& e, int v) {
 void close_coincident(Editor& e, int v, const PinchFront& z, int part_p, int part_q) {
   std::vector<int> around(e.star(v));
   for (int t : around) {
-    if (!e.alive(t) || e.s_.triangle_part[t] != part_p || e.degenerate(t) || e.cap(t)) continue;
-    const Triangle f = e.s_.triangles[t];
+    if (!e.alive(t) || e.mesh().triangle_part[t] != part_p || e.degenerate(t) || e.cap(t)) continue;
+    const Triangle f = e.mesh().triangles[t];
     for (int u : around) {
-      if (!e.alive(u) || e.s_.triangle_part[u] != part_q) continue;
-      const Triangle g = e.s_.triangles[u];
+      if (!e.alive(u) || e.mesh().triangle_part[u] != part_q) continue;
+      const Triangle g = e.mesh().triangles[u];
       if (!(Editor::has(g, f[0]) && Editor::has(g, f[1]) && Editor::has(g, f[2]))) continue;
       e.kill(t);
       e.kill(u);
@@ -105,14 +105,14 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
   // there (a merge before the zip), a front of no wedge whose radial order is arbitrary.
   for (int i = 0; i < 3; ++i) {
     const int ti = tris[i], tj = tris[(i + 1) % 3], tk = tris[(i + 2) % 3];
-    const int apex = Editor::opposite(e.s_.triangles[ti], a, b);
-    if (apex != Editor::opposite(e.s_.triangles[tj], a, b)) continue;
+    const int apex = Editor::opposite(e.mesh().triangles[ti], a, b);
+    if (apex != Editor::opposite(e.mesh().triangles[tj], a, b)) continue;
     // Degenerate ones (on two colocated vertices, left before the zip) are the repair's: it
     // removes such coincident pairs, while one triangle of K would stay degenerate.
     if (e.degenerate(ti) || e.cap(ti)) return false;
-    const int pp = e.s_.triangle_part[ti], pq = e.s_.triangle_part[tj], pk = e.s_.triangle_part[tk];
+    const int pp = e.mesh().triangle_part[ti], pq = e.mesh().triangle_part[tj], pk = e.mesh().triangle_part[tk];
     if (pp == pq || pp == pk || pq == pk) return false;
-    const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
+    const auto rp = e.part_regions()[pp], rq = e.part_regions()[pq], rk = e.part_regions()[pk];
     for (int r : {rp.first, rp.second}) {
       if (r < -1 || !pinches_out(rp, rq, rk, r)) continue;
       const int ra = other_region(rp, r);
@@ -126,25 +126,25 @@ bool find_front(Editor& e, int a, int b, double max_wedge, double max_thickness,
     const FanBlade& lo = fan[i];
     const FanBlade& hi = fan[(i + 1) % 3];
     const int tk = fan[(i + 2) % 3].triangle;
-    const int pp = e.s_.triangle_part[lo.triangle], pq = e.s_.triangle_part[hi.triangle];
-    const int pk = e.s_.triangle_part[tk];
+    const int pp = e.mesh().triangle_part[lo.triangle], pq = e.mesh().triangle_part[hi.triangle];
+    const int pk = e.mesh().triangle_part[tk];
     if (pp == pq || pp == pk || pq == pk) return false;
-    const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq], rk = e.part_regions_[pk];
+    const auto rp = e.part_regions()[pp], rq = e.part_regions()[pq], rk = e.part_regions()[pk];
     // The region inside the wedge, on the side of lo facing increasing angles.
     const int r = lo.forward ? rp.first : rp.second;
     if (r < -1 || !pinches_out(rp, rq, rk, r)) return false;
     const int ra = other_region(rp, r);
     z.tp = lo.triangle;
     z.tq = hi.triangle;
-    z.c1 = Editor::opposite(e.s_.triangles[z.tp], a, b);
-    z.c2 = Editor::opposite(e.s_.triangles[z.tq], a, b);
+    z.c1 = Editor::opposite(e.mesh().triangles[z.tp], a, b);
+    z.c2 = Editor::opposite(e.mesh().triangles[z.tq], a, b);
     z.part_k = pk;
     z.region = r;
     // P's triangles face A (ra) when it is P's first region, K's when it is K's.
     z.p_faces_k_first = (rp.first == ra) == (rk.first == ra);
     z.anchor = -1;
     for (int c : {z.c1, z.c2}) {
-      if (e.s_.features[c].kind == VertexFeature::Surface && !e.s_.features[c].pinned) continue;
+      if (e.mesh().features[c].kind == VertexFeature::Surface && !e.mesh().features[c].pinned) continue;
       if (z.anchor >= 0 || side_contact_degree(e, c, pp, pq) < 1) return false;
       z.anchor = c;
     }
@@ -160,8 +160,8 @@ template <class Test>
 int count_edges(Editor& e, const std::vector<int>& tris, int part, Test&& test) {
   std::vector<std::pair<int, int>> edges;
   for (int t : tris) {
-    if (!e.alive(t) || (part >= 0 && e.s_.triangle_part[t] != part)) continue;
-    const Triangle& f = e.s_.triangles[t];
+    if (!e.alive(t) || (part >= 0 && e.mesh().triangle_part[t] != part)) continue;
+    const Triangle& f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) edges.push_back({std::min(f[i], f[(i + 1) % 3]), std::max(f[i], f[(i + 1) % 3])});
   }
   std::sort(edges.begin(), edges.end());
@@ -180,8 +180,8 @@ int folds_of_k(Editor& e, const std::vector<int>& tris, int part_k) {
     if (around.size() < 3 || !e.radial_order(a, b, around, fan)) return false;
     const size_t n = fan.size();
     for (size_t j = 0; j < n; ++j) {
-      const bool k_there = e.s_.triangle_part[fan[j].triangle] == part_k ||
-                           e.s_.triangle_part[fan[(j + 1) % n].triangle] == part_k;
+      const bool k_there = e.mesh().triangle_part[fan[j].triangle] == part_k ||
+                           e.mesh().triangle_part[fan[(j + 1) % n].triangle] == part_k;
       if (k_there && wedge_after(fan, j) < kFoldDeg * M_PI / 180.0) return true;
     }
     return false;
@@ -195,7 +195,7 @@ int sharp_creases(Editor& e, const std::vector<int>& tris) {
   std::vector<int> pair;
   return count_edges(e, tris, -1, [&](int a, int b) {
     e.edge_triangles(a, b, pair);
-    if (pair.size() != 2 || e.s_.triangle_part[pair[0]] != e.s_.triangle_part[pair[1]]) return false;
+    if (pair.size() != 2 || e.mesh().triangle_part[pair[0]] != e.mesh().triangle_part[pair[1]]) return false;
     // Consistently oriented: the interior angle is 180 deg minus the angle between the normals.
     const Vec3 n0 = e.normal(pair[0]).normalized(), n1 = e.normal(pair[1]).normalized();
     return n0.dot(n1) < -std::cos(kCreaseDeg * M_PI / 180.0);
@@ -208,7 +208,7 @@ int sharp_creases(Editor& e, const std::vector<int>& tris) {
 int merge_short_front_edge(Editor& e, int a, int b, double max_length) {
   if ((e.p(a) - e.p(b)).norm() >= max_length) return -1;
   for (int v : {a, b})
-    if (e.s_.features[v].kind == VertexFeature::Corner || !e.s_.features[v].pinned) return -1;
+    if (e.mesh().features[v].kind == VertexFeature::Corner || !e.mesh().features[v].pinned) return -1;
   std::vector<int> tris;
   e.edge_triangles(a, b, tris);
   if (tris.size() != 3) return -1;
@@ -216,9 +216,9 @@ int merge_short_front_edge(Editor& e, int a, int b, double max_length) {
   // the layer's region, K lies between the regions beyond them.
   bool front = false;
   for (int k = 0; k < 3 && !front; ++k) {
-    const auto rk = e.part_regions_[e.s_.triangle_part[tris[k]]];
-    const auto rp = e.part_regions_[e.s_.triangle_part[tris[(k + 1) % 3]]];
-    const auto rq = e.part_regions_[e.s_.triangle_part[tris[(k + 2) % 3]]];
+    const auto rk = e.part_regions()[e.mesh().triangle_part[tris[k]]];
+    const auto rp = e.part_regions()[e.mesh().triangle_part[tris[(k + 1) % 3]]];
+    const auto rq = e.part_regions()[e.mesh().triangle_part[tris[(k + 2) % 3]]];
     for (int r : {rp.first, rp.second}) front = front || (r >= 0 && pinches_out(rp, rq, rk, r));
   }
   if (!front) return -1;
@@ -244,18 +244,18 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
   PinchZips report;
   if (max_thickness <= 0.0 || max_wedge_deg <= 0.0) return report;
   const double max_wedge = max_wedge_deg * M_PI / 180.0;
-  std::vector<int> part_triangles(e.input_.parts.size(), 0);
+  std::vector<int> part_triangles(e.input().parts.size(), 0);
   auto count_triangles = [&] {
     std::fill(part_triangles.begin(), part_triangles.end(), 0);
-    for (size_t t = 0; t < e.s_.triangles.size(); ++t)
-      if (e.alive(static_cast<int>(t))) ++part_triangles[e.s_.triangle_part[t]];
+    for (size_t t = 0; t < e.mesh().triangles.size(); ++t)
+      if (e.alive(static_cast<int>(t))) ++part_triangles[e.mesh().triangle_part[t]];
   };
   count_triangles();
   std::deque<std::pair<int, int>> queue;
-  for (size_t ti = 0; ti < e.s_.triangles.size(); ++ti) {
+  for (size_t ti = 0; ti < e.mesh().triangles.size(); ++ti) {
     const int t = static_cast<int>(ti);
     if (!e.alive(t)) continue;
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i)
       if (f[i] < f[(i + 1) % 3]) queue.push_back({f[i], f[(i + 1) % 3]});
   }
@@ -270,7 +270,6 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
   // but for folds: a front that stops short of where the layer opens leaves one there, which
   // the repair (after the zip) opens.
   const Editor::Census before_zip = e.census();
-  const std::vector<VertexFeature> features = e.s_.features;
   e.begin();
   // Every step moves a front forward into a layer thinner than max_thickness, never back.
   while (!queue.empty()) {
@@ -302,7 +301,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     }
     PinchFront z;
     if (!find_front(e, a, b, max_wedge, max_thickness, z)) continue;
-    const int part_p = e.s_.triangle_part[z.tp], part_q = e.s_.triangle_part[z.tq];
+    const int part_p = e.mesh().triangle_part[z.tp], part_q = e.mesh().triangle_part[z.tq];
     if (part_triangles[part_p] < 3 || part_triangles[part_q] < 3) continue;  // a side keeps triangles
 
     if (z.c1 == z.c2) {
@@ -388,7 +387,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     {
       std::vector<int> around;
       for (int t : before)
-        for (int v : e.s_.triangles[t]) around.push_back(v);
+        for (int v : e.mesh().triangles[t]) around.push_back(v);
       std::sort(around.begin(), around.end());
       around.erase(std::unique(around.begin(), around.end()), around.end());
       for (int v : around) degree_before.push_back({v, side_contact_degree(e, v, part_p, part_q)});
@@ -430,8 +429,8 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
           } else if (where.y() < kMargin) {
             split(e, a, c, apex);
           } else {
-            const Triangle f = e.s_.triangles[t];
-            const int part = e.s_.triangle_part[t];
+            const Triangle f = e.mesh().triangles[t];
+            const int part = e.mesh().triangle_part[t];
             e.kill(t);
             for (int i = 0; i < 3; ++i) e.add_triangle({f[i], f[(i + 1) % 3], apex}, part);
           }
@@ -471,7 +470,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
         absorbed = true;
         std::vector<int> around{a, b, z.c1, z.c2, front};
         for (int t : changed)
-          for (int w : e.s_.triangles[t]) around.push_back(w);
+          for (int w : e.mesh().triangles[t]) around.push_back(w);
         e.stars(around, after);
         return true;
       }
@@ -484,10 +483,10 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     if (front == z.anchor) {
       hold(e, front);
     } else {
-      VertexFeature held = e.s_.features[a].kind == VertexFeature::Contact ? e.s_.features[a] : e.s_.features[b];
+      VertexFeature held = e.mesh().features[a].kind == VertexFeature::Contact ? e.mesh().features[a] : e.mesh().features[b];
       if (held.kind != VertexFeature::Contact) held = {VertexFeature::Surface, z.part_k};
       held.pinned = true;
-      e.s_.features[front] = held;
+      e.set_feature(front, held);
     }
     for (int v : {a, b}) hold(e, v);
     // A merge closes a triangle of each side; an insertion splits the triangle it lands in.
@@ -503,8 +502,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
   const Editor::Census after_zip = e.census();
   auto but_folds = [](const Editor::Census& c) { return c.count.total() - c.count.folds; };
   if (report.edits() > 0 && but_folds(after_zip) > but_folds(before_zip)) {
-    e.rollback();
-    std::copy(features.begin(), features.end(), e.s_.features.begin());
+    e.rollback();  // the features too: they are journaled
     return PinchZips{};
   }
   e.commit();

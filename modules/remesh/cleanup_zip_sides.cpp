@@ -21,14 +21,14 @@ std::vector<int> region_shell(Editor& e, int seed, int r, int limit) {
   std::vector<int> shell{seed}, tris;
   std::vector<FanBlade> fan;
   auto faces_r_positive = [&](int t) {
-    const auto rr = e.part_regions_[e.s_.triangle_part[t]];
+    const auto rr = e.part_regions()[e.mesh().triangle_part[t]];
     return rr.first == r;
   };
   for (size_t k = 0; k < shell.size(); ++k) {
     const int t = shell[k];
-    const auto rr = e.part_regions_[e.s_.triangle_part[t]];
+    const auto rr = e.part_regions()[e.mesh().triangle_part[t]];
     if ((rr.first == r) == (rr.second == r)) return {};  // r on both sides, or none
-    const Triangle f = e.s_.triangles[t];
+    const Triangle f = e.mesh().triangles[t];
     for (int i = 0; i < 3; ++i) {
       const int a = f[i], b = f[(i + 1) % 3];
       e.edge_triangles(a, b, tris);
@@ -42,7 +42,7 @@ std::vector<int> region_shell(Editor& e, int seed, int r, int limit) {
       const bool up = fan[at].forward == faces_r_positive(t);
       const FanBlade& next = fan[(at + (up ? 1 : n - 1)) % n];
       // Its side toward t must face r too.
-      const auto rn = e.part_regions_[e.s_.triangle_part[next.triangle]];
+      const auto rn = e.part_regions()[e.mesh().triangle_part[next.triangle]];
       const bool positive_toward_t = up ? !next.forward : next.forward;
       if ((positive_toward_t ? rn.first : rn.second) != r) return {};
       if (std::find(shell.begin(), shell.end(), next.triangle) != shell.end()) continue;
@@ -65,24 +65,24 @@ std::vector<int> region_shell(Editor& e, int seed, int r, int limit) {
 bool absorb_pocket(Editor& e, int v, int part_p, int r, double max_thickness, std::vector<int>& changed,
                    Violations& there) {
   constexpr int kLimit = 400;  // triangles of a pocket
-  const int a = other_region(e.part_regions_[part_p], r);
+  const int a = other_region(e.part_regions()[part_p], r);
   std::vector<int> seeds;
   for (int t : e.star(v))
-    if (e.s_.triangle_part[t] == part_p) seeds.push_back(t);
+    if (e.mesh().triangle_part[t] == part_p) seeds.push_back(t);
   for (int seed : seeds) {
-    if (!e.alive(seed) || e.s_.triangle_part[seed] != part_p) continue;
+    if (!e.alive(seed) || e.mesh().triangle_part[seed] != part_p) continue;
     const std::vector<int> shell = region_shell(e, seed, r, kLimit);
     if (shell.empty()) continue;
     // Thin: every vertex of P's triangles near the rest of the shell.
     std::vector<int> gone, kept;
-    for (int t : shell) (e.s_.triangle_part[t] == part_p ? gone : kept).push_back(t);
+    for (int t : shell) (e.mesh().triangle_part[t] == part_p ? gone : kept).push_back(t);
     if (kept.empty()) continue;
     bool thin = true;
     for (int t : gone)
-      for (int w : e.s_.triangles[t]) {
+      for (int w : e.mesh().triangles[t]) {
         double best = std::numeric_limits<double>::infinity();
         for (int u : kept) {
-          const Triangle& g = e.s_.triangles[u];
+          const Triangle& g = e.mesh().triangles[u];
           best = std::min(best, squared_distance_to_triangle(e.p(w), e.p(g[0]), e.p(g[1]), e.p(g[2])));
         }
         thin = thin && best < max_thickness * max_thickness;
@@ -93,19 +93,19 @@ bool absorb_pocket(Editor& e, int v, int part_p, int r, double max_thickness, st
     // no triangle goes to another surface between the same regions.
     std::vector<int> touching;
     for (int t : shell)
-      for (int w : e.s_.triangles[t])
+      for (int w : e.mesh().triangles[t])
         for (int u : e.star(w))
-          if (!std::binary_search(shell.begin(), shell.end(), u)) touching.push_back(e.s_.triangle_part[u]);
+          if (!std::binary_search(shell.begin(), shell.end(), u)) touching.push_back(e.mesh().triangle_part[u]);
     std::sort(touching.begin(), touching.end());
     touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
     std::vector<std::pair<int, int>> relabel;  // triangle, new part (-1: goes)
     bool found_all = true;
     for (int t : kept) {
-      const int beyond = other_region(e.part_regions_[e.s_.triangle_part[t]], r);
+      const int beyond = other_region(e.part_regions()[e.mesh().triangle_part[t]], r);
       int part = -1;
       if (beyond != a)
         for (int q : touching)
-          if (joins(e.part_regions_[q], a, beyond)) part = q;
+          if (joins(e.part_regions()[q], a, beyond)) part = q;
       if (beyond != a && part < 0) {
         found_all = false;
         break;
@@ -116,13 +116,13 @@ bool absorb_pocket(Editor& e, int v, int part_p, int r, double max_thickness, st
     there = e.violations(kept);
     for (int t : gone) e.kill(t);
     for (const auto& [t, part] : relabel) {
-      const Triangle f = e.s_.triangles[t];
-      const auto rt = e.part_regions_[e.s_.triangle_part[t]];
+      const Triangle f = e.mesh().triangles[t];
+      const auto rt = e.part_regions()[e.mesh().triangle_part[t]];
       e.kill(t);
       if (part < 0) continue;
       // The side that faced r faces a now.
       const bool r_positive = rt.first == r;
-      const bool a_first = e.part_regions_[part].first == a;
+      const bool a_first = e.part_regions()[part].first == a;
       changed.push_back(e.add_triangle(r_positive == a_first ? f : Triangle{f[0], f[2], f[1]}, part));
     }
     return true;
@@ -138,7 +138,7 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
   std::vector<int> at_u, at_v, tris, nu, nv;
   auto third = [&](const std::vector<int>& edge, int t0, int t1) {
     for (int c : edge)
-      if (c != t0 && c != t1) return e.s_.triangle_part[c];
+      if (c != t0 && c != t1) return e.mesh().triangle_part[c];
     return -1;
   };
   auto off_line = [&](int w, int o) {
@@ -147,10 +147,10 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
     return (q - q.dot(d) * d).norm();
   };
   for (int t : std::vector<int>(e.star(x))) {
-    const int strip = e.s_.triangle_part[t];
-    const auto rs = e.part_regions_[strip];
+    const int strip = e.mesh().triangle_part[t];
+    const auto rs = e.part_regions()[strip];
     int ends[2], n = 0;
-    for (int w : e.s_.triangles[t])
+    for (int w : e.mesh().triangles[t])
       if (w != x) ends[n++] = w;
     for (int flip = 0; flip < 2; ++flip) {
       const int u = ends[flip], v = ends[1 - flip];
@@ -159,24 +159,24 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
       if (at_u.size() != 3 || at_v.size() != 3) continue;
       for (int tp : at_u)
         for (int tq : at_v) {
-          const int pp = e.s_.triangle_part[tp], pq = e.s_.triangle_part[tq];
+          const int pp = e.mesh().triangle_part[tp], pq = e.mesh().triangle_part[tq];
           if (tp == t || tq == t || pp == pq || pp == strip || pq == strip) continue;
-          const auto rp = e.part_regions_[pp], rq = e.part_regions_[pq];
+          const auto rp = e.part_regions()[pp], rq = e.part_regions()[pq];
           int r = -2;
           for (int c : {rs.first, rs.second})
             if (c >= 0 && (c == rp.first || c == rp.second) && (c == rq.first || c == rq.second)) r = c;
           if (r < 0 || side_contact_degree(e, x, pp, pq) < 1) continue;
           const int sa = third(at_u, t, tp), sb = third(at_v, t, tq);
           const int zr = other_region(rs, r), ar = other_region(rp, r), br = other_region(rq, r);
-          if (sa < 0 || sb < 0 || zr == ar || zr == br || ar == br || !joins(e.part_regions_[sa], ar, zr) ||
-              !joins(e.part_regions_[sb], br, zr))
+          if (sa < 0 || sb < 0 || zr == ar || zr == br || ar == br || !joins(e.part_regions()[sa], ar, zr) ||
+              !joins(e.part_regions()[sb], br, zr))
             continue;
           const Vec3 np = e.normal(tp).normalized(), nq = e.normal(tq).normalized();
           const double thickness = std::max(plane_distance(e.p(u), e.p(x), nq), plane_distance(e.p(v), e.p(x), np));
           if (thickness >= max_thickness) continue;
           if (std::acos(std::min(1.0, std::abs(np.dot(nq)))) >= max_wedge) continue;
           if (std::max(off_line(u, v), off_line(v, u)) >= max_thickness) continue;
-          const VertexFeature fu = e.s_.features[u], fv = e.s_.features[v];
+          const VertexFeature fu = e.mesh().features[u], fv = e.mesh().features[v];
           const bool u_free = fu.kind == VertexFeature::Contact && !fu.pinned;
           const bool v_free = fv.kind == VertexFeature::Contact && !fv.pinned;
           if (!u_free && !v_free) continue;
@@ -185,7 +185,7 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
           // around x or c.
           e.edge_triangles(u, v, tris);
           std::vector<int> apex, common, extra;
-          for (int s : tris) apex.push_back(Editor::opposite(e.s_.triangles[s], u, v));
+          for (int s : tris) apex.push_back(Editor::opposite(e.mesh().triangles[s], u, v));
           std::sort(apex.begin(), apex.end());
           apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
           e.neighbours(u, nu);
@@ -199,11 +199,11 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
           near.insert(near.end(), extra.begin(), extra.end());
           for (int w : near)
             for (int s : e.star(w)) {
-              const int part = e.s_.triangle_part[s];
-              if (k.part_k < 0 && joins(e.part_regions_[part], ar, br)) k.part_k = part;
+              const int part = e.mesh().triangle_part[s];
+              if (k.part_k < 0 && joins(e.part_regions()[part], ar, br)) k.part_k = part;
             }
           if (!extra.empty() && k.part_k < 0) continue;
-          if (k.part_k >= 0) k.p_faces_k_first = (rp.first == ar) == (e.part_regions_[k.part_k].first == ar);
+          if (k.part_k >= 0) k.p_faces_k_first = (rp.first == ar) == (e.part_regions()[k.part_k].first == ar);
           // The free end goes; both free, they meet midway.
           rung = StripRung{u_free ? u : v, u_free ? v : u, pp, pq, r, k};
           return true;
@@ -219,7 +219,7 @@ bool find_rung(Editor& e, int x, double max_wedge, double max_thickness, StripRu
 // vertex, or -1; `pocket` tells whether a pocket went.
 int close_rung(Editor& e, int x, const StripRung& rung, double max_thickness, bool& pocket) {
   const int from = rung.u, into = rung.v;
-  const bool both_free = e.s_.features[into].kind == VertexFeature::Contact && !e.s_.features[into].pinned;
+  const bool both_free = e.mesh().features[into].kind == VertexFeature::Contact && !e.mesh().features[into].pinned;
   std::vector<int> before;
   e.stars({x, from, into}, before);
   Violations in_pocket;
@@ -240,13 +240,13 @@ int close_rung(Editor& e, int x, const StripRung& rung, double max_thickness, bo
       if (!absorb_pocket(e, into, rung.part_p, rung.region, max_thickness, changed, in_pocket)) return false;
       pocket = true;
       for (int c : changed)
-        for (int w : e.s_.triangles[c]) around.push_back(w);
+        for (int w : e.mesh().triangles[c]) around.push_back(w);
     }
     e.stars(around, after);
     return true;
   });
   if (!done) return -1;
-  e.s_.features[into].pinned = true;
+  e.pin(into);
   return into;
 }
 

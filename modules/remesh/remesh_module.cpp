@@ -17,6 +17,7 @@
 #include "io/atomic_file.h"
 #include "io/model_io.h"
 #include "modules/check/model_validity.h"
+#include "modules/remesh/cleanup_report_json.h"
 #include "modules/remesh/remesh.h"
 
 namespace voroseal {
@@ -319,6 +320,7 @@ class RemeshModule final : public Module {
                          {"degenerate_left", result.cleanup.degenerate_left},
                          {"pinches_left", result.cleanup.pinches_left},
                          {"folds_left", result.cleanup.folds_left}};
+    report["cleanup"]["phases"] = phases_json(result.cleanup.phases);
     report["min_feature"] = result.min_feature;
     report["sharp_points"] = result.build.sharp_points;
     const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +

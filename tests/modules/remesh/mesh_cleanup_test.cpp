@@ -12,26 +12,13 @@
 #include "framework/model/model_builder.h"
 #include "modules/remesh/mesh_cleanup.h"
 #include "modules/remesh/surface_projection.h"
+#include "tests/modules/remesh/remeshed_input.h"
 #include "tests/support/test_models.h"
 
 namespace voroseal {
 namespace {
 
-// The model's own triangles as a RemeshedSurface, each vertex tagged with the feature it lies on.
-RemeshedSurface as_remeshed(const StructuralModel& m) {
-  RemeshedSurface s;
-  s.vertices = m.vertices;
-  s.features.assign(m.vertices.size(), VertexFeature{});
-  for (size_t p = 0; p < m.parts.size(); ++p)
-    for (int v : m.parts[p].model_vertex) s.features[v] = {VertexFeature::Surface, static_cast<int>(p)};
-  for (size_t c = 0; c < m.contacts.size(); ++c)
-    for (int v : m.contacts[c].vertices) s.features[v] = {VertexFeature::Contact, static_cast<int>(c)};
-  for (size_t k = 0; k < m.corners.size(); ++k) s.features[m.corners[k].vertex] = {VertexFeature::Corner, static_cast<int>(k)};
-  const ModelTriangles t = flatten(m);
-  s.triangles = t.triangles;
-  s.triangle_part = t.part;
-  return s;
-}
+using test::as_remeshed;
 
 double mean_min_angle(const RemeshedSurface& s) {
   double sum = 0;
@@ -108,8 +95,8 @@ TEST(MeshCleanup, QualityPassesRaiseTheMeanQWithoutSharperTriangles) {
   RemeshedSurface jittered = as_remeshed(input);
   jitter(jittered, projector, 0.05, 11);
   CleanupOptions with, without;
-  with.smoothing_iterations = without.smoothing_iterations = 1;
-  without.quality_passes = 0;
+  with.thresholds.smoothing_iterations = without.thresholds.smoothing_iterations = 1;
+  without.thresholds.quality_passes = 0;
   RemeshedSurface plain = jittered, optimised = jittered;
   clean_up(plain, input, projector, without);
   const CleanupReport report = clean_up(optimised, input, projector, with);
@@ -152,7 +139,7 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   s.triangle_part.insert(s.triangle_part.end(), 2, part);
   const size_t n = s.triangles.size();
   CleanupOptions options;
-  options.smoothing_iterations = 0;
+  options.thresholds.smoothing_iterations = 0;
   const CleanupReport report = clean_up(s, input, projector, options);
   EXPECT_GE(report.valence3_removed, 1);
   EXPECT_EQ(s.triangles.size(), n - 2);
@@ -162,12 +149,12 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
 // that the pass a test is about is measured alone.
 CleanupOptions moves_off() {
   CleanupOptions o;
-  o.smoothing_iterations = 0;
-  o.angle_passes = 0;
-  o.quality_passes = 0;
-  o.flip_flatness_deg = 0.0;
-  o.sharp_collapse_rounds = 0;
-  o.sharp_passes = 0;
+  o.thresholds.smoothing_iterations = 0;
+  o.thresholds.angle_passes = 0;
+  o.thresholds.quality_passes = 0;
+  o.thresholds.flip_flatness_deg = 0.0;
+  o.thresholds.sharp_collapse_rounds = 0;
+  o.thresholds.sharp_passes = 0;
   return o;
 }
 
@@ -219,8 +206,8 @@ TEST(MeshCleanup, CollapsesAContactEdgeThatLeavesSharpTriangles) {
   ASSERT_GE(sharper_than_30(s), 3);
 
   CleanupOptions with = moves_off(), without = moves_off();
-  with.needle_angle_deg = without.needle_angle_deg = 5.0;
-  with.sharp_collapse_rounds = 4;
+  with.thresholds.needle_angle_deg = without.thresholds.needle_angle_deg = 5.0;
+  with.thresholds.sharp_collapse_rounds = 4;
   RemeshedSurface kept = s, collapsed = s;
   clean_up(kept, input, projector, without);
   const CleanupReport report = clean_up(collapsed, input, projector, with);
@@ -270,9 +257,9 @@ TEST(MeshCleanup, GivesAContactVertexAFourthTriangleInAPartThatRunsOn) {
   }
   ASSERT_EQ(part_valence(s, v, flat), 3);
   CleanupOptions options;
-  options.smoothing_iterations = 0;
-  options.angle_passes = 0;
-  options.sharp_collapse_rounds = 0;
+  options.thresholds.smoothing_iterations = 0;
+  options.thresholds.angle_passes = 0;
+  options.thresholds.sharp_collapse_rounds = 0;
   options.min_feature = 0.0;
   options.fidelity_tolerance = 0.0;
   const CleanupReport report = clean_up(s, input, projector, options);
@@ -319,8 +306,8 @@ TEST(MeshCleanup, APleatIsAFold) {
   };
   ASSERT_GE(pleats(), 1);
   CleanupOptions options;
-  options.smoothing_iterations = 0;
-  options.angle_passes = 0;
+  options.thresholds.smoothing_iterations = 0;
+  options.thresholds.angle_passes = 0;
   const CleanupReport report = clean_up(s, input, projector, options);
   // Repaired, or at least counted as a fold that is left.
   EXPECT_TRUE(pleats() == 0 || report.folds_left > 0) << "pleats " << pleats() << ", folds left " << report.folds_left;
@@ -353,8 +340,8 @@ TEST(MeshCleanup, OneTriangleOfACoincidentPairGoesWhenBothCannot) {
   s.triangles.push_back({f[0], f[2], f[1]});
   s.triangle_part.push_back(top);
   CleanupOptions options;
-  options.smoothing_iterations = 0;
-  options.angle_passes = 0;
+  options.thresholds.smoothing_iterations = 0;
+  options.thresholds.angle_passes = 0;
   const CleanupReport report = clean_up(s, input, projector, options);
   EXPECT_GE(report.intersections_found, 1);
   EXPECT_EQ(report.intersections_left, 0);
@@ -754,7 +741,7 @@ TEST(MeshCleanup, AFaultLensThinnerThanTheMinimumFeatureGoesWhenAnotherKeepsItsR
   // regions: the thin lens's triangles have 9 deg angles).
   const SurfaceProjector projector(input);
   CleanupOptions only_merges = moves_off();
-  only_merges.needle_angle_deg = 1.0;
+  only_merges.thresholds.needle_angle_deg = 1.0;
   CleanupOptions options = only_merges;
   options.min_feature = 0.05;
   RemeshedSurface s = as_remeshed(input);

@@ -187,9 +187,9 @@ TEST(Remesh, SharpPassesLeaveFewerSharpTrianglesAndNoneMuchSharper) {
   Progress progress(false);
   RemeshOptions options;
   options.seeds.num_seeds = 200;
-  options.cleanup.sharp_passes = 0;
+  options.cleanup.thresholds.sharp_passes = 0;
   const RemeshResult plain = remesh(input, options, log, progress);
-  options.cleanup.sharp_passes = 4;
+  options.cleanup.thresholds.sharp_passes = 4;
   const RemeshResult counted = remesh(input, options, log, progress);
   EXPECT_EQ(plain.cleanup.sharp_moves, 0);
   EXPECT_GT(counted.cleanup.sharp_moves, 0);
