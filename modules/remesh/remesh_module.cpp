@@ -64,6 +64,37 @@ ValidityReport written_verdict(const std::string& text, const std::string& path)
   }
 }
 
+/// Free borders of the remesh on parts whose input part has none: holes the remesh made, even
+/// where `check` would take them for fault tips (an input sealed there says they are not).
+CheckEntry holes_made(const StructuralModel& input, const StructuralModel& output,
+                      const std::vector<int>& input_part_of_output) {
+  CheckEntry entry;
+  entry.name = "holes_made";
+  std::vector<char> bordered(input.parts.size(), 0);
+  for (const Contact& c : input.contacts)
+    if (c.is_free_border())
+      for (int p : c.parts) bordered[p] = 1;
+  for (const Contact& c : output.contacts) {
+    if (!c.is_free_border()) continue;
+    bool hole = false;
+    for (int p : c.parts) {
+      const int q = p < static_cast<int>(input_part_of_output.size()) ? input_part_of_output[p] : -1;
+      hole = hole || (q >= 0 && !bordered[q]);
+    }
+    if (!hole) continue;
+    entry.count += static_cast<long>(c.vertices.size()) - 1;
+    if (entry.examples.size() < static_cast<size_t>(kDefectsNamed))
+      entry.examples.push_back({"free border of " + std::to_string(c.vertices.size() - 1) +
+                                    " edges on a surface sealed in the input",
+                                output.vertices[c.vertices.front()] + output.frame.origin,
+                                {}});
+  }
+  entry.message = entry.count == 0 ? "no free border the input does not have"
+                                   : std::to_string(entry.count) +
+                                         " free border edges on surfaces sealed in the input";
+  return entry;
+}
+
 /// The failed error checks with their counts and a few places.
 nlohmann::json verdict_json(const ValidityReport& verdict) {
   nlohmann::json failed = nlohmann::json::array();
@@ -337,6 +368,8 @@ class RemeshModule final : public Module {
 
     // One verdict, `voroseal check`'s, on the model as written (cracks show only when the file
     // is read back); nothing invalid goes to --output, --keep-invalid is where to look at it.
+    const std::shared_ptr<const StructuralModel> input_model = context.model;
+    const StructuralModel& input = *input_model;
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
     const WriteOptions write{{context.input_path}};
     const std::string out =
@@ -349,6 +382,7 @@ class RemeshModule final : public Module {
     } else {
       verdict = check_model(*context.model);
     }
+    verdict.checks.push_back(holes_made(input, *context.model, result.topology.input_part_of_output));
     const bool valid = verdict.valid();
     report["valid"] = valid;
     report["validity"] = verdict_json(verdict);
@@ -366,8 +400,9 @@ class RemeshModule final : public Module {
       } else if (!out.empty()) {
         kept = "; nothing written to " + out + " (--keep-invalid PATH writes it for inspection)";
       }
-      context.log.error("remesh: the remeshed model is not valid (what `voroseal check` finds): " +
-                        defects_text(verdict) + kept);
+      context.log.error(
+          "remesh: the remeshed model is not valid (what `voroseal check` finds, and holes the "
+          "input has not): " + defects_text(verdict) + kept);
     }
     // TetGen on crossing surfaces fails, and through a hole it fills two regions as one: the
     // volume mesh of an invalid model would only hide what went wrong.
