@@ -99,6 +99,46 @@ std::vector<Vec3> sample_growth(const ModelGeometry& geometry, const std::vector
   return points;
 }
 
+// Pairs of parts that meet along a contact somewhere.
+class MeetingParts {
+ public:
+  explicit MeetingParts(const StructuralModel& model) {
+    for (const Contact& c : model.contacts)
+      for (size_t i = 0; i < c.parts.size(); ++i)
+        for (size_t j = i + 1; j < c.parts.size(); ++j) pairs_.insert({c.parts[i], c.parts[j]});
+  }
+  bool meet(int a, int b) const { return pairs_.count({std::min(a, b), std::max(a, b)}) > 0; }
+
+ private:
+  std::set<std::pair<int, int>> pairs_;  // (a, b) with a < b
+};
+
+// Counts `failures` by kind and by what becomes of them; the spots to refine go to `spots`.
+BallRefinementRound classify(const std::vector<BallViolation>& failures,
+                             const BallRefinementOptions& refine, const MeetingParts& parts,
+                             std::vector<Spot>* spots) {
+  BallRefinementRound r;
+  for (const BallViolation& f : failures) {
+    ++r.failures[f.kind];
+    if (f.separation < refine.min_feature) {
+      ++r.merges;
+      continue;
+    }
+    if (f.kind == BallViolation::Unlinked && parts.meet(f.part, f.other_part)) {
+      ++r.wedges;
+      continue;
+    }
+    if (f.cell_size <= refine.min_size) {
+      ++r.unrefinable;
+      continue;
+    }
+    if (spots != nullptr)
+      spots->push_back(
+          {f.where, std::max(refine.shrink * f.cell_size, refine.min_size), 0.5 * f.cell_size});
+  }
+  return r;
+}
+
 }  // namespace
 
 BallRefinementResult refine_until_ball_property(const StructuralModel& model,
@@ -107,7 +147,9 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
                                                 const BallRefinementOptions& refine, Logger& log,
                                                 Progress& progress) {
   BallRefinementResult result;
-  const std::vector<double> base_density = seeds.vertex_density;
+  if (refine.max_rounds <= 0) return result;
+  const std::vector<double> base_density =
+      seeds.vertex_density.empty() ? options.vertex_density : seeds.vertex_density;
   const size_t nv = model.vertices.size();
   std::vector<double> factor(nv, 1.0);
   std::vector<double> density = base_density;
@@ -120,64 +162,18 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
   if (!base_density.empty())
     for (size_t v = 0; v < nv; ++v)
       base_size[v] = h / std::pow(std::max(base_density[v], 1e-300), 0.25);
-  // Pairs of parts that meet along a contact somewhere (a, b with a < b).
-  std::set<std::pair<int, int>> meeting;
-  for (const Contact& c : model.contacts)
-    for (size_t i = 0; i < c.parts.size(); ++i)
-      for (size_t j = i + 1; j < c.parts.size(); ++j) meeting.insert({c.parts[i], c.parts[j]});
-  auto meet = [&](int a, int b) { return meeting.count({std::min(a, b), std::max(a, b)}) > 0; };
+  const MeetingParts parts(model);
   RvdOptions rvd_options;
   rvd_options.threads = refine.threads;
   char line[300];
-  for (int round = 0;; ++round) {
+  for (int round = 0; round < refine.max_rounds; ++round) {
     const auto t0 = Clock::now();
-    BallRefinementRound r;
     const RestrictedVoronoiDiagram rvd =
         compute_restricted_voronoi_diagram(geometry, seeds.seeds, rvd_options);
-    std::vector<BallViolation> failures = find_ball_violations(geometry, rvd, refine.threads);
     std::vector<Spot> spots;
-    for (const BallViolation& f : failures) {
-      ++r.failures[f.kind];
-      if (f.separation < refine.min_feature) {
-        ++r.merges;
-        continue;
-      }
-      if (f.kind == BallViolation::Unlinked && meet(f.part, f.other_part)) {
-        ++r.wedges;
-        continue;
-      }
-      if (f.cell_size <= refine.min_size) {
-        ++r.unrefinable;
-        continue;
-      }
-      const double size = std::max(refine.shrink * f.cell_size, refine.min_size);
-      spots.push_back({f.where, size, 0.5 * f.cell_size});
-    }
-    const bool last = spots.empty() || round >= refine.max_rounds;
-    if (last) {
-      result.merges_left = r.merges;
-      result.wedges_left = r.wedges;
-      result.failures_left = r.total() - r.merges - r.wedges;
-      r.seconds = since(t0);
-      result.rounds.push_back(r);
-      std::snprintf(
-          line, sizeof line,
-          "remesh: topological ball: %d failures left (%d closer than d_min, merged on purpose, "
-          "%d in thin wedges)",
-          r.total(), r.merges, r.wedges);
-      log.info(line);
-      for (size_t k = 0; k < failures.size() && k < kFailuresLogged; ++k) {
-        const BallViolation& f = failures[k];
-        const Vec3 x = f.where + model.frame.origin;
-        std::snprintf(
-            line, sizeof line,
-            "remesh: ball failure left: %s at (%.10g, %.10g, %.10g), %.4g apart, cell %.4g",
-            to_string(f.kind), x.x(), x.y(), x.z(), f.separation, f.cell_size);
-        log.debug(line);
-      }
-      result.left = std::move(failures);
-      break;
-    }
+    BallRefinementRound r =
+        classify(find_ball_violations(geometry, rvd, refine.threads), refine, parts, &spots);
+    if (spots.empty()) break;  // what is left is measured on the final diagram
     r.refined = static_cast<int>(spots.size());
     lower_sizes(geometry.vertices(), base_size, spots, refine.gradation, factor);
     const std::vector<double> before = density;
@@ -197,8 +193,8 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
     result.seeds_added += r.seeds_added;
     std::snprintf(line, sizeof line,
                   "remesh: topological ball round %d: %d failures (%d disks with holes, %d parts, "
-                  "%d contacts, "
-                  "%d corners, %d unlinked), %d closer than d_min; %d refined, %d seeds added",
+                  "%d contacts, %d corners, %d unlinked), %d closer than d_min; %d refined, %d "
+                  "seeds added",
                   round + 1, r.total(), r.failures[0], r.failures[1], r.failures[2], r.failures[3],
                   r.failures[4], r.merges, r.refined, r.seeds_added);
     log.info(line);
@@ -214,6 +210,34 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
   }
   if (result.seeds_added > 0) seeds.vertex_density = std::move(density);
   return result;
+}
+
+void record_ball_failures(const StructuralModel& model, const ModelGeometry& geometry,
+                          const RestrictedVoronoiDiagram& rvd, const BallRefinementOptions& refine,
+                          Logger& log, BallRefinementResult& result) {
+  const auto t0 = Clock::now();
+  std::vector<BallViolation> failures = find_ball_violations(geometry, rvd, refine.threads);
+  BallRefinementRound r = classify(failures, refine, MeetingParts(model), nullptr);
+  result.merges_left = r.merges;
+  result.wedges_left = r.wedges;
+  result.failures_left = r.total() - r.merges - r.wedges;
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "remesh: topological ball: %d failures left (%d closer than d_min, merged on "
+                "purpose, %d in thin wedges)",
+                r.total(), r.merges, r.wedges);
+  log.info(line);
+  for (size_t k = 0; k < failures.size() && k < kFailuresLogged; ++k) {
+    const BallViolation& f = failures[k];
+    const Vec3 x = f.where + model.frame.origin;
+    std::snprintf(line, sizeof line,
+                  "remesh: ball failure left: %s at (%.10g, %.10g, %.10g), %.4g apart, cell %.4g",
+                  to_string(f.kind), x.x(), x.y(), x.z(), f.separation, f.cell_size);
+    log.debug(line);
+  }
+  result.left = std::move(failures);
+  r.seconds = since(t0);
+  result.rounds.push_back(r);
 }
 
 }  // namespace voroseal

@@ -12,6 +12,7 @@
 
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
+#include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_optimization.h"
 #include "modules/remesh/topological_ball.h"
 
@@ -38,7 +39,7 @@ struct BallRefinementRound {
   /// Unlinked pieces of two surfaces that meet along a contact outside the cell: a thin wedge,
   /// where smaller cells only move the failure closer to the contact; left to the mesh building.
   int wedges = 0;
-  int unrefinable = 0;            // failures whose cell is already no larger than min_size
+  int unrefinable = 0;  // failures whose cell is already no larger than min_size
   int seeds_added = 0;
   double seconds = 0.0;
   int total() const;
@@ -54,12 +55,19 @@ struct BallRefinementResult {
   std::vector<BallViolation> left;  // the failures of the final seeds
 };
 
-/// Refines `seeds` (optimised on `model` with `options`) until the property holds above
-/// d_min or max_rounds is reached; `seeds` receives the new seeds and density.
+/// Refines `seeds` (optimised on `model` with `options`) until the property holds above d_min
+/// or max_rounds is reached (0: returns at once); `seeds` receives the new seeds and density.
+/// The result lists the rounds that refined; record_ball_failures() measures what is left.
 BallRefinementResult refine_until_ball_property(const StructuralModel& model,
                                                 SeedOptimizationResult& seeds,
                                                 const SeedOptions& options,
                                                 const BallRefinementOptions& refine, Logger& log,
                                                 Progress& progress);
+
+/// Measures the failures of the final seeds on `rvd`, the diagram the mesh is built from: sets
+/// result's *_left counts and `left`, and appends their round (nothing refined in it).
+void record_ball_failures(const StructuralModel& model, const ModelGeometry& geometry,
+                          const RestrictedVoronoiDiagram& rvd, const BallRefinementOptions& refine,
+                          Logger& log, BallRefinementResult& result);
 
 }  // namespace voroseal

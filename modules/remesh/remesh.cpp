@@ -162,37 +162,44 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   RemeshResult result;
   result.seeds = std::move(seeds);
   CleanupOptions cleanup = options.cleanup;
+  // The density the seeds were optimised for (the options' when the seeds do not say).
+  auto seed_density = [&]() -> const std::vector<double>& {
+    return result.seeds.vertex_density.empty() ? options.seeds.vertex_density
+                                               : result.seeds.vertex_density;
+  };
   auto t0 = std::chrono::steady_clock::now();
-  {
-    // d_min from the resolution asked for; the refinement splits every cell whose pieces are
-    // farther apart than that (all of them with keep_topology) before the mesh is built.
-    const double h0 = result.seeds.edge_length > 0.0
-                          ? result.seeds.edge_length
-                          : edge_length_for_seeds(ModelGeometry(input, result.seeds.vertex_density).root_mass(),
-                                                  static_cast<int>(result.seeds.seeds.size()));
-    if (options.keep_topology) cleanup.min_feature = 0.0;
-    if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h0;
-    BallRefinementOptions refine = options.refinement;
-    refine.min_feature = cleanup.min_feature;
-    refine.threads = options.seeds.threads;
-    if (options.keep_topology) {
-      refine.max_rounds = std::max(refine.max_rounds, kKeepTopologyRounds);
-      refine.min_size = h0 / kKeepTopologyRefinement;
-    } else {
-      refine.min_size = std::max(refine.min_size, cleanup.min_feature);
-    }
-    Progress quiet(false);
-    result.refinement = refine_until_ball_property(input, result.seeds, options.seeds, refine, log, quiet);
+  // d_min from the resolution asked for; the refinement splits every cell whose pieces are
+  // farther apart than that (all of them with keep_topology) before the mesh is built.
+  const double h0 =
+      result.seeds.edge_length > 0.0
+          ? result.seeds.edge_length
+          : edge_length_for_seeds(ModelGeometry(input, seed_density()).root_mass(),
+                                  static_cast<int>(result.seeds.seeds.size()));
+  if (options.keep_topology) cleanup.min_feature = 0.0;
+  if (cleanup.min_feature < 0.0) cleanup.min_feature = -cleanup.min_feature * h0;
+  BallRefinementOptions refine = options.refinement;
+  refine.min_feature = cleanup.min_feature;
+  refine.threads = options.seeds.threads;
+  if (options.keep_topology) {
+    refine.max_rounds = std::max(refine.max_rounds, kKeepTopologyRounds);
+    refine.min_size = h0 / kKeepTopologyRefinement;
+  } else {
+    refine.min_size = std::max(refine.min_size, cleanup.min_feature);
   }
+  Progress quiet(false);
+  result.refinement =
+      refine_until_ball_property(input, result.seeds, options.seeds, refine, log, quiet);
   result.refinement_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const ModelGeometry geometry(
-      input, result.seeds.vertex_density.empty() ? options.seeds.vertex_density : result.seeds.vertex_density);
+  const ModelGeometry geometry(input, seed_density());
   RvdOptions rvd_options;
   rvd_options.threads = options.seeds.threads;
   const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
   result.rvd_seconds = seconds_since(t0);
+  // What the refinement left, on the diagram the mesh is built from.
+  record_ball_failures(input, geometry, rvd, refine, log, result.refinement);
+  result.refinement_seconds += result.refinement.rounds.back().seconds;
 
   t0 = std::chrono::steady_clock::now();
   const SurfaceProjector projector(input);

@@ -6,10 +6,7 @@
 #include <utility>
 
 #include "framework/core/union_find.h"
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include "modules/remesh/voronoi_clipping.h"
 
 namespace voroseal {
 
@@ -61,6 +58,8 @@ struct CellScratch {
   std::vector<std::pair<int, RvdVertexTag>> tags;
   std::vector<TaggedEdge> edges;
   std::vector<std::pair<RvdVertexTag, int>> segment_of_tag;
+  std::vector<double> area_of_root;
+  std::vector<char> reported;
 };
 
 Vec3 polygon_centroid(const RestrictedVoronoiDiagram& rvd, int p) {
@@ -187,13 +186,15 @@ class CellChecker {
     // The linked group of largest area is the cell; every other group is a piece that the dual
     // would glue to it.
     int main_component = 0;
-    std::vector<double> area_of_root(count + (s1 - s0), 0.0);
+    std::vector<double>& area_of_root = s.area_of_root;
+    area_of_root.assign(count + (s1 - s0), 0.0);
     for (int k = 0; k < count; ++k) area_of_root[linked.find(k)] += s.pieces[k].area;
     for (int k = 0; k < count; ++k)
       if (area_of_root[linked.find(k)] > area_of_root[linked.find(main_component)])
         main_component = k;
     const int main_root = linked.find(main_component);
-    std::vector<char> reported(count + (s1 - s0), 0);
+    std::vector<char>& reported = s.reported;
+    reported.assign(count + (s1 - s0), 0);
     for (int k = 0; k < count; ++k) {
       const int root = linked.find(k);
       if (root == main_root || reported[root]) continue;
@@ -336,10 +337,8 @@ std::vector<BallViolation> find_ball_violations(const ModelGeometry& geometry,
   const CellChecker checker(geometry, rvd, component, corner_vertex);
   const int n = rvd.num_seeds();
   std::vector<BallViolation> all;
-  int nthreads = threads > 0 ? threads : 1;
-#ifdef _OPENMP
-  if (threads <= 0) nthreads = omp_get_max_threads();
-#endif
+  const int nthreads = rvd_detail::active_threads(rvd_detail::resolve_threads(threads),
+                                                  static_cast<long>(rvd.polygons.size()));
 #pragma omp parallel num_threads(nthreads)
   {
     CellScratch scratch;

@@ -34,6 +34,19 @@ Vec3 local(const StructuralModel& model, double x, double y, double z) {
   return Vec3(x, y, z) - model.frame.origin;
 }
 
+// Refines, then measures what is left on the final seeds' diagram, as remesh_from_seeds does.
+BallRefinementResult refine_and_measure(const StructuralModel& model, SeedOptimizationResult& seeds,
+                                        const BallRefinementOptions& refine) {
+  Logger log(LogLevel::Quiet);
+  Progress quiet(false);
+  BallRefinementResult r =
+      refine_until_ball_property(model, seeds, SeedOptions{}, refine, log, quiet);
+  const ModelGeometry geometry(model, seeds.vertex_density);
+  record_ball_failures(model, geometry, compute_restricted_voronoi_diagram(geometry, seeds.seeds),
+                       refine, log, r);
+  return r;
+}
+
 int count(const std::vector<BallViolation>& all, BallViolation::Kind kind) {
   return static_cast<int>(std::count_if(all.begin(), all.end(),
                                         [&](const BallViolation& v) { return v.kind == kind; }));
@@ -44,7 +57,8 @@ TEST(TopologicalBall, HoldsForWellSpreadSeedsOnASquare) {
   const ModelGeometry geometry(model);
   std::vector<Vec3> seeds;
   for (int j = 0; j < 5; ++j)
-    for (int i = 0; i < 5; ++i) seeds.push_back(local(model, 0.1 + 0.2 * i + 0.01 * j, 0.1 + 0.2 * j, 0.0));
+    for (int i = 0; i < 5; ++i)
+      seeds.push_back(local(model, 0.1 + 0.2 * i + 0.01 * j, 0.1 + 0.2 * j, 0.0));
   const auto failures =
       find_ball_violations(geometry, compute_restricted_voronoi_diagram(geometry, seeds));
   EXPECT_TRUE(failures.empty()) << to_string(failures.front().kind);
@@ -68,7 +82,8 @@ TEST(TopologicalBall, ACellAcrossAThinLayerHasUnlinkedPieces) {
   const ModelGeometry geometry(model);
   std::vector<Vec3> seeds;
   for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) seeds.push_back(local(model, 0.125 + 0.25 * i, 0.125 + 0.25 * j, 0.0));
+    for (int i = 0; i < 4; ++i)
+      seeds.push_back(local(model, 0.125 + 0.25 * i, 0.125 + 0.25 * j, 0.0));
   const auto failures =
       find_ball_violations(geometry, compute_restricted_voronoi_diagram(geometry, seeds));
   // Every cell reaches the top sheet, which it does not meet along any contact.
@@ -76,7 +91,8 @@ TEST(TopologicalBall, ACellAcrossAThinLayerHasUnlinkedPieces) {
   for (const BallViolation& v : failures)
     if (v.kind == BallViolation::Unlinked) {
       EXPECT_NEAR(v.separation, gap, 1e-9);
-      EXPECT_NEAR(v.where.z() + model.frame.origin.z(), gap, 1e-12);  // the seed to add sits on the piece it splits off
+      EXPECT_NEAR(v.where.z() + model.frame.origin.z(), gap,
+                  1e-12);  // the seed to add sits on the piece it splits off
     }
 }
 
@@ -111,21 +127,19 @@ TEST(BallRefinement, SplitsTheCellsOfALayerThickerThanDmin) {
     for (int i = 0; i < 3; ++i) x.push_back(local(model, 0.17 + 0.33 * i, 0.17 + 0.33 * j, 0.0));
   seeds.edge_length =
       edge_length_for_seeds(ModelGeometry(model).area(), static_cast<int>(x.size()));
-  SeedOptions options;
   BallRefinementOptions refine;
   refine.max_rounds = 6;
   refine.min_feature = 0.5 * gap;
   refine.min_size = 0.02;
-  Logger log(LogLevel::Quiet);
-  Progress quiet(false);
-  const BallRefinementResult r =
-      refine_until_ball_property(model, seeds, options, refine, log, quiet);
+  const BallRefinementResult r = refine_and_measure(model, seeds, refine);
   EXPECT_GT(r.seeds_added, 0);
   EXPECT_EQ(static_cast<int>(seeds.seeds.size()), 9 + r.seeds_added);
   EXPECT_EQ(r.failures_left, 0);
   EXPECT_EQ(seeds.vertex_density.size(), model.vertices.size());
   // Seeds on both sheets now.
-  EXPECT_TRUE(std::any_of(x.begin(), x.end(), [&](const Vec3& p) { return p.z() + model.frame.origin.z() > 0.5 * gap; }));
+  EXPECT_TRUE(std::any_of(x.begin(), x.end(), [&](const Vec3& p) {
+    return p.z() + model.frame.origin.z() > 0.5 * gap;
+  }));
 }
 
 TEST(BallRefinement, LeavesALayerThinnerThanDminToTheMerges) {
@@ -133,14 +147,13 @@ TEST(BallRefinement, LeavesALayerThinnerThanDminToTheMerges) {
   const StructuralModel model = build_model(two_sheets(16, gap));
   SeedOptimizationResult seeds;
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) seeds.seeds.push_back(local(model, 0.17 + 0.33 * i, 0.17 + 0.33 * j, 0.0));
+    for (int i = 0; i < 3; ++i)
+      seeds.seeds.push_back(local(model, 0.17 + 0.33 * i, 0.17 + 0.33 * j, 0.0));
   const std::vector<Vec3> before = seeds.seeds;
   BallRefinementOptions refine;
+  refine.max_rounds = 6;
   refine.min_feature = 0.05;
-  Logger log(LogLevel::Quiet);
-  Progress quiet(false);
-  const BallRefinementResult r =
-      refine_until_ball_property(model, seeds, SeedOptions{}, refine, log, quiet);
+  const BallRefinementResult r = refine_and_measure(model, seeds, refine);
   EXPECT_EQ(r.seeds_added, 0);
   EXPECT_EQ(r.failures_left, 0);
   // Every cell reaches the other sheet, and one holds both sheets' corners: all closer than d_min.
