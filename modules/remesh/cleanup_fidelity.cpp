@@ -29,26 +29,51 @@ int fidelity_contact(const Editor& e, int u, int v) {
 
 }  // namespace
 
-int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance) {
-  if (tolerance <= 0.0) return 0;
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance,
+                        int max_splits) {
+  if (tolerance <= 0.0 || max_splits <= 0) return 0;
   const ContactArcs& arcs = *e.arcs();
-  int splits = 0;
-  const size_t n = e.mesh().triangles.size();
-  std::vector<int> tris;
-  for (size_t ti = 0; ti < n; ++ti) {
+  // How far a triangle strays: its contact edges' chords from the input contact, its middle
+  // from its input part. The farthest go first, up to the budget.
+  auto contact_stray = [&](int u, int v, int* bend) {
+    const int c = fidelity_contact(e, u, v);
+    if (c < 0) return 0.0;
+    double distance = 0.0;
+    const int x = arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)),
+                                        e.p(u), e.p(v), &distance);
+    if (bend != nullptr) *bend = x;
+    return x < 0 ? 0.0 : distance;
+  };
+  auto centroid_stray = [&](int t) {
+    const Triangle& f = e.mesh().triangles[t];
+    const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
+    return (projector.on_part(e.mesh().triangle_part[t], centroid) - centroid).norm();
+  };
+  std::vector<std::pair<double, int>> strays;
+  for (size_t ti = 0; ti < e.mesh().triangles.size(); ++ti) {
     const int t = static_cast<int>(ti);
+    if (!e.alive(t)) continue;
+    const Triangle& f = e.mesh().triangles[t];
+    double far = centroid_stray(t);
+    for (int i = 0; i < 3; ++i)
+      if (e.is_line_edge(f[i], f[(i + 1) % 3]))
+        far = std::max(far, contact_stray(f[i], f[(i + 1) % 3], nullptr));
+    if (far > tolerance) strays.emplace_back(far, t);
+  }
+  std::sort(strays.rbegin(), strays.rend());
+  int splits = 0;
+  std::vector<int> tris;
+  for (const auto& [far, t] : strays) {
+    if (splits >= max_splits) break;
     if (!e.alive(t)) continue;
     const Triangle f = e.mesh().triangles[t];
     bool done = false;
     for (int i = 0; i < 3 && !done; ++i) {
       const int u = f[i], v = f[(i + 1) % 3];
       if (!e.is_line_edge(u, v)) continue;
+      int x = -1;
+      if (contact_stray(u, v, &x) <= tolerance || x < 0) continue;
       const int c = fidelity_contact(e, u, v);
-      if (c < 0) continue;
-      double distance = 0.0;
-      const int x =
-          arcs.farthest_between(c, arcs.position(c, e.p(u)), arcs.position(c, e.p(v)), e.p(u), e.p(v), &distance);
-      if (x < 0 || distance <= tolerance) continue;
       // The bend is kept by a vertex there. Close to an end (a third of the edge), that end moves
       // there rather than leave a short edge (needles in every part along the contact).
       const Vec3& bend = e.input().vertices[x];
@@ -87,8 +112,7 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
     }
     if (done || !e.alive(t)) continue;
     const int part = e.mesh().triangle_part[t];
-    const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
-    if ((projector.on_part(part, centroid) - centroid).norm() <= tolerance) continue;
+    if (centroid_stray(t) <= tolerance) continue;
     // Split the longest edge inside the part, at its middle moved onto the part.
     int best = -1;
     double longest = 0.0;
@@ -142,8 +166,8 @@ bool FidelityGuard::allows(const Vec3& x) const {
   return true;
 }
 
-int refine_toward_input(Editor& e, double tolerance) {
-  if (tolerance <= 0.0) return 0;
+int refine_toward_input(Editor& e, double tolerance, int max_splits) {
+  if (tolerance <= 0.0 || max_splits <= 0) return 0;
   const StructuralModel& in = e.input();
   std::vector<int> part_of(in.vertices.size(), -1);
   for (size_t p = 0; p < in.parts.size(); ++p)
@@ -169,6 +193,7 @@ int refine_toward_input(Editor& e, double tolerance) {
   std::vector<char> split_once(e.mesh().triangles.size(), 0);
   int inserted = 0;
   for (const auto& [d, v] : far) {
+    if (inserted >= max_splits) break;
     const Vec3& x = in.vertices[v];
     const int part = part_of[v];
     // Still far (an earlier insertion may have come close)?

@@ -1,5 +1,7 @@
 #include "modules/remesh/cleanup_phases.h"
 
+#include <cmath>
+
 #include "modules/remesh/cleanup_steps.h"
 
 namespace voroseal::cleanup {
@@ -78,8 +80,12 @@ PhaseCounts quality(Editor& e, const CleanupContext& c) {
 PhaseCounts fidelity(Editor& e, const CleanupContext& c) {
   PhaseCounts r;
   const double tolerance = c.options.fidelity_tolerance;
+  int alive = 0;
+  for (size_t t = 0; t < e.mesh().triangles.size(); ++t) alive += e.alive(static_cast<int>(t));
+  const int budget = static_cast<int>(std::ceil(c.thresholds.fidelity_split_share * alive));
+  const int splits = refine_for_fidelity(e, c.projector, tolerance, budget);
   r.progress = r.counts.fidelity_splits =
-      refine_for_fidelity(e, c.projector, tolerance) + refine_toward_input(e, tolerance);
+      splits + refine_toward_input(e, tolerance, budget - splits);
   if (r.progress == 0) return r;
   r.counts.flips = flip_edges(e, c.thresholds.flip_flatness_deg);
   smooth(e, c.projector);

@@ -269,13 +269,15 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
 // Splits contact edges whose chord leaves the input contact by more than `tolerance` (at the
 // farthest input vertex, kept in place), and surface edges of triangles whose middle lies
 // farther than `tolerance` from their input part (at the edge middle, projected). The input
-// contacts' arc lengths are the Editor's (arcs_).
-int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance);
+// contacts' arc lengths are the Editor's (arcs_). The farthest first, at most `max_splits`.
+int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tolerance,
+                        int max_splits);
 
 // The other half of the fidelity check: input vertices inside a part (a fold, a bump between the
 // output vertices) farther than `tolerance` from the remesh are inserted into the nearest
-// triangle of their part, where they stay (pinned): the remesh then passes through them.
-int refine_toward_input(Editor& e, double tolerance);
+// triangle of their part, where they stay (pinned): the remesh then passes through them. The
+// farthest first, at most `max_splits`.
+int refine_toward_input(Editor& e, double tolerance, int max_splits);
 
 // Where a contact vertex may move: its contact edges then stray from the input contact by no
 // more than the fidelity tolerance (or than they did), so that the moves after the fidelity

@@ -50,6 +50,11 @@ struct CleanupThresholds {
   int smoothing_iterations = 10;
   // A fidelity split is followed by flips and a smoothing pass, which may stray again: a few.
   int fidelity_rounds = 3;
+  // A fidelity round splits at most this share of the triangles, the farthest from the input
+  // first: the distance judged is the largest, and past the worst places what strays is the
+  // input's roughness below the asked resolution, where splits only trade shape for pinned
+  // vertices (docs/benchmarks.md).
+  double fidelity_split_share = 0.02;
   // The angle passes move one vertex at a time; each pass frees its neighbours' moves.
   int angle_passes = 8;
   // Each collapse round may leave a new short edge next to the one collapsed.

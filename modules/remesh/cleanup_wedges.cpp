@@ -39,15 +39,6 @@ void thin_wedges(Editor& e, int a, int b, std::vector<std::pair<int, int>>& out)
   }
 }
 
-// Angle (degrees) between the half-planes of edge (a, b) through c1 and through c2.
-double wedge_angle_deg(const Vec3& a, const Vec3& b, const Vec3& c1, const Vec3& c2) {
-  const Vec3 axis = (b - a).normalized();
-  Vec3 u = c1 - a, w = c2 - a;
-  u -= u.dot(axis) * axis;
-  w -= w.dot(axis) * axis;
-  return std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
-}
-
 // The alive triangle of least index with edge (a, b).
 int first_triangle(Editor& e, int a, int b) {
   int first = -1;
