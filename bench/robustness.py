@@ -112,7 +112,8 @@ def one_run(a, model, scenario, geo_seed, res, seeds, out_dir):
         "q_mean": get(mr, "quality.q_mean"),
         "under30": get(mr, "quality.pct_angle_lt_30"),
         "hausdorff_pct": get(mr, "comparison.hausdorff_pct"),
-        "seeds_added": get(rep, "refinement.seeds_added", 0),
+        "seeds_added": get(rep, "refinement.seeds_added", 0)
+        + get(rep, "repair_refinement.seeds_added", 0),
     })
     if crossings != 0:
         row["reasons"].append(f"{crossings} crossing pairs")

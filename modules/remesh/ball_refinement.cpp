@@ -139,6 +139,44 @@ BallRefinementRound classify(const std::vector<BallViolation>& failures,
   return r;
 }
 
+// With the sizes lowered (`factor`), the density follows; seeds go in every spot and where the
+// density rose, in proportion to the integral of sqrt(rho) so that cells elsewhere keep their
+// size, and all seeds are optimised again. Returns the seeds added.
+int add_seeds_and_optimize(const StructuralModel& model, const std::vector<double>& base_density,
+                           const std::vector<double>& factor, const std::vector<Spot>& spots,
+                           const SeedOptions& options, const BallRefinementOptions& refine,
+                           int round, Logger& log, Progress& progress, ModelGeometry& geometry,
+                           std::vector<double>& density, SeedOptimizationResult& seeds) {
+  const std::vector<double> before = density;
+  density = density_of(base_density, factor);
+  const double root_before = geometry.root_mass();
+  geometry = ModelGeometry(model, density);
+  const int n = static_cast<int>(seeds.seeds.size());
+  const int wanted = static_cast<int>(std::lround(n * geometry.root_mass() / root_before));
+  std::vector<Vec3> initial = seeds.seeds;
+  for (const Spot& s : spots) initial.push_back(s.where);
+  const int drawn = std::max(0, wanted - static_cast<int>(initial.size()));
+  const std::vector<Vec3> more =
+      sample_growth(geometry, before, density, drawn, options.random_seed + round + 1);
+  initial.insert(initial.end(), more.begin(), more.end());
+  const int added = static_cast<int>(initial.size()) - n;
+  SeedOptions again = options;
+  again.optimizer.max_iterations = refine.iterations;
+  again.boundary_weight = seeds.alpha;
+  SeedOptimizationResult next = optimize_seeds(geometry, std::move(initial), again, log, progress);
+  seeds.seeds = std::move(next.seeds);
+  seeds.optimization_seconds += next.optimization_seconds;
+  return added;
+}
+
+// The size at each vertex that `density` gives for the seeds' edge length h (at rho = 1).
+std::vector<double> sizes_of(const std::vector<double>& density, size_t nv, double h) {
+  std::vector<double> size(nv, h);
+  if (!density.empty())
+    for (size_t v = 0; v < nv; ++v) size[v] = h / std::pow(std::max(density[v], 1e-300), 0.25);
+  return size;
+}
+
 }  // namespace
 
 BallRefinementResult refine_until_ball_property(const StructuralModel& model,
@@ -158,10 +196,7 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
   // what the density before refinement gives there.
   const double h =
       edge_length_for_seeds(geometry.root_mass(), static_cast<int>(seeds.seeds.size()));
-  std::vector<double> base_size(nv, h);
-  if (!base_density.empty())
-    for (size_t v = 0; v < nv; ++v)
-      base_size[v] = h / std::pow(std::max(base_density[v], 1e-300), 0.25);
+  const std::vector<double> base_size = sizes_of(base_density, nv, h);
   const MeetingParts parts(model);
   RvdOptions rvd_options;
   rvd_options.threads = refine.threads;
@@ -176,21 +211,8 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
     if (spots.empty()) break;  // what is left is measured on the final diagram
     r.refined = static_cast<int>(spots.size());
     lower_sizes(geometry.vertices(), base_size, spots, refine.gradation, factor);
-    const std::vector<double> before = density;
-    density = density_of(base_density, factor);
-    const double root_before = geometry.root_mass();
-    geometry = ModelGeometry(model, density);
-    // Seeds in proportion to the integral of sqrt(rho), so cells elsewhere keep their size.
-    const int n = static_cast<int>(seeds.seeds.size());
-    const int wanted = static_cast<int>(std::lround(n * geometry.root_mass() / root_before));
-    std::vector<Vec3> initial = seeds.seeds;
-    for (const Spot& s : spots) initial.push_back(s.where);
-    const int drawn = std::max(0, wanted - static_cast<int>(initial.size()));
-    const std::vector<Vec3> more =
-        sample_growth(geometry, before, density, drawn, options.random_seed + round + 1);
-    initial.insert(initial.end(), more.begin(), more.end());
-    r.seeds_added = static_cast<int>(initial.size()) - n;
-    result.seeds_added += r.seeds_added;
+    r.seeds_added = add_seeds_and_optimize(model, base_density, factor, spots, options, refine,
+                                           round, log, progress, geometry, density, seeds);
     std::snprintf(line, sizeof line,
                   "remesh: topological ball round %d: %d failures (%d disks with holes, %d parts, "
                   "%d contacts, %d corners, %d unlinked), %d closer than d_min; %d refined, %d "
@@ -198,18 +220,46 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
                   round + 1, r.total(), r.failures[0], r.failures[1], r.failures[2], r.failures[3],
                   r.failures[4], r.merges, r.refined, r.seeds_added);
     log.info(line);
-    SeedOptions again = options;
-    again.optimizer.max_iterations = refine.iterations;
-    again.boundary_weight = seeds.alpha;
-    SeedOptimizationResult next =
-        optimize_seeds(geometry, std::move(initial), again, log, progress);
-    seeds.seeds = std::move(next.seeds);
-    seeds.optimization_seconds += next.optimization_seconds;
+    result.seeds_added += r.seeds_added;
     r.seconds = since(t0);
     result.rounds.push_back(r);
   }
   if (result.seeds_added > 0) seeds.vertex_density = std::move(density);
   return result;
+}
+
+int refine_at_places(const StructuralModel& model, SeedOptimizationResult& seeds,
+                     const SeedOptions& options, const std::vector<Vec3>& places,
+                     const BallRefinementOptions& refine, int round, Logger& log,
+                     Progress& progress) {
+  if (places.empty()) return 0;
+  const std::vector<double> base_density =
+      seeds.vertex_density.empty() ? options.vertex_density : seeds.vertex_density;
+  std::vector<double> density = base_density;
+  ModelGeometry geometry(model, density);
+  const double h =
+      edge_length_for_seeds(geometry.root_mass(), static_cast<int>(seeds.seeds.size()));
+  const size_t nv = model.vertices.size();
+  const std::vector<double> base_size = sizes_of(base_density, nv, h);
+  // Each place gets cells of `shrink` × the size there, over the cell it lies in.
+  PointCloud cloud{geometry.vertices().data(), nv};
+  PointKdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::vector<Spot> spots;
+  spots.reserve(places.size());
+  for (const Vec3& x : places) {
+    std::uint32_t v = 0;
+    double d2 = 0.0;
+    tree.knnSearch(x.data(), 1, &v, &d2);
+    const double local = base_size[v];
+    spots.push_back({x, std::max(refine.shrink * local, refine.min_size), local});
+  }
+  std::vector<double> factor(nv, 1.0);
+  lower_sizes(geometry.vertices(), base_size, spots, refine.gradation, factor);
+  const int added = add_seeds_and_optimize(model, base_density, factor, spots, options, refine,
+                                           round, log, progress, geometry, density, seeds);
+  seeds.vertex_density = std::move(density);
+  return added;
 }
 
 void record_ball_failures(const StructuralModel& model, const ModelGeometry& geometry,

@@ -2,6 +2,7 @@
 // the JSON report (seeds, optimisation history, mesh building, clean-up, topology and feature
 // audit, timings), the log lines, --dump-seeds and --tetmesh.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +32,14 @@ constexpr double kBytesPerSeed = 4096.0;
 constexpr double kBytesPerInputTriangle = 2048.0;
 // Defects named in the error when the remeshed model is invalid.
 constexpr int kDefectsNamed = 5;
+// Rounds of refinement of an invalid remesh, by default.
+constexpr int kRepairRounds = 3;
+// Places of each failed check the refinement of an invalid remesh goes to.
+constexpr int kPlacesRefined = 200;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 /// Writes "x y z" per seed in file coordinates (local + frame origin), atomically.
 void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::string& path,
@@ -46,9 +55,10 @@ void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::s
 }
 
 /// check_model() on `text` read back as the file `path` would be.
-ValidityReport written_verdict(const std::string& text, const std::string& path) {
+ValidityReport written_verdict(const std::string& text, const std::string& path,
+                               const CheckOptions& options) {
   try {
-    ValidityReport report = check_model(read_model_text(text, path));
+    ValidityReport report = check_model(read_model_text(text, path), options);
     report.model = path;
     return report;
   } catch (const std::exception& e) {
@@ -83,7 +93,7 @@ CheckEntry holes_made(const StructuralModel& input, const StructuralModel& outpu
     }
     if (!hole) continue;
     entry.count += static_cast<long>(c.vertices.size()) - 1;
-    if (entry.examples.size() < static_cast<size_t>(kDefectsNamed))
+    if (entry.examples.size() < static_cast<size_t>(kPlacesRefined))
       entry.examples.push_back({"free border of " + std::to_string(c.vertices.size() - 1) +
                                     " edges on a surface sealed in the input",
                                 output.vertices[c.vertices.front()] + output.frame.origin,
@@ -93,6 +103,50 @@ CheckEntry holes_made(const StructuralModel& input, const StructuralModel& outpu
                                    : std::to_string(entry.count) +
                                          " free border edges on surfaces sealed in the input";
   return entry;
+}
+
+/// The verdict on a remesh: `voroseal check`'s on the model as written (cracks show only when
+/// the file is read back), plus the holes it made; `text` is the file to write at `out`.
+struct Judgement {
+  std::string text;
+  ValidityReport verdict;
+  long regions_gained = 0;
+  /// What the refinement of an invalid remesh removes: the failed checks' counts and the
+  /// regions gained (pockets left).
+  long defects() const {
+    long n = regions_gained;
+    for (const CheckEntry& c : verdict.checks)
+      if (c.severity == Severity::Error) n += c.count;
+    return n;
+  }
+};
+
+Judgement judge(const StructuralModel& input, const RemeshResult& result, const std::string& out,
+                const WriteOptions& write) {
+  CheckOptions options;
+  options.max_examples = kPlacesRefined;
+  Judgement j;
+  if (!out.empty()) {
+    j.text = model_text(result.model, out, write);
+    j.verdict = written_verdict(j.text, out, options);
+  } else {
+    j.verdict = check_model(result.model, options);
+  }
+  j.verdict.checks.push_back(holes_made(input, result.model, result.topology.input_part_of_output));
+  j.regions_gained = static_cast<long>(result.topology.regions_gained.size());
+  return j;
+}
+
+/// Where an invalid remesh is refined: the failed checks' places and the pockets left, in the
+/// model's local frame.
+std::vector<Vec3> places_to_refine(const Judgement& j, const TopologyReport& topology,
+                                   const Frame& frame) {
+  std::vector<Vec3> places;
+  for (const CheckEntry& c : j.verdict.checks)
+    if (c.severity == Severity::Error && !c.passed())
+      for (const CheckExample& e : c.examples) places.push_back(e.location - frame.origin);
+  for (const GainedRegion& g : topology.regions_gained) places.push_back(g.location);
+  return places;
 }
 
 /// The failed error checks with their counts and a few places.
@@ -218,6 +272,11 @@ class RemeshModule final : public Module {
                      0, 20));
     p.push_back(spec("refine-iterations", ParameterType::Int, BallRefinementOptions{}.iterations,
                      "optimiser iterations after each refinement round", 0, 1e6));
+    p.push_back(spec("repair-rounds", ParameterType::Int, kRepairRounds,
+                     "rounds of refinement where the remeshed model comes out invalid or closes a "
+                     "pocket: smaller cells around each place, seeds optimised again, mesh built "
+                     "again (0: none)",
+                     0, 20));
     p.push_back(spec("keep-topology", ParameterType::Bool, false,
                      "merge nothing: refine until every surface part, contact, corner and region of the "
                      "input has its counterpart (d_min 0)"));
@@ -284,7 +343,46 @@ class RemeshModule final : public Module {
       dump_seeds(seeds.seeds, context.model->frame, path, context.input_path);
       context.log.info("remesh: wrote " + std::to_string(seeds.seeds.size()) + " seeds to " + path);
     }
-    RemeshResult result = remesh_from_seeds(*context.model, std::move(seeds), remesh_options, context.log);
+    const std::shared_ptr<const StructuralModel> input_model = context.model;
+    const StructuralModel& input = *input_model;
+    const WriteOptions write{{context.input_path}};
+    const std::string out =
+        parameters.has("output") ? parameters.get_string("output") : std::string();
+    RemeshResult result = remesh_from_seeds(input, std::move(seeds), remesh_options, context.log);
+    Judgement judgement = judge(input, result, out, write);
+    // Where the remesh came out invalid or closed a pocket, the dual was not faithful there:
+    // smaller cells around each place, the seeds optimised again, the mesh built again. Each
+    // round refines the last; the remesh with the fewest defects stays.
+    nlohmann::json repair_rounds = nlohmann::json::array();
+    const size_t seeds_before_repair = result.seeds.seeds.size();
+    {
+      SeedOptimizationResult last = result.seeds;
+      std::vector<Vec3> places = places_to_refine(judgement, result.topology, input.frame);
+      BallRefinementOptions repair = remesh_options.refinement;
+      repair.min_size = result.min_feature;
+      const int rounds = static_cast<int>(parameters.get_int("repair-rounds"));
+      for (int round = 0; round < rounds && !places.empty(); ++round) {
+        const auto t0 = std::chrono::steady_clock::now();
+        Progress quiet(false);
+        const int added = refine_at_places(input, last, options, places, repair, round,
+                                           context.log, quiet);
+        RemeshResult next = remesh_from_seeds(input, last, remesh_options, context.log);
+        Judgement j = judge(input, next, out, write);
+        const long defects = j.defects();
+        repair_rounds.push_back({{"places", places.size()},
+                                 {"seeds_added", added},
+                                 {"defects", defects},
+                                 {"seconds", seconds_since(t0)}});
+        context.log.info("remesh: refined " + std::to_string(places.size()) +
+                         " places where the remesh was invalid (" + std::to_string(added) +
+                         " seeds added): " + std::to_string(defects) + " defects left");
+        places = places_to_refine(j, next.topology, input.frame);
+        if (defects < judgement.defects()) {
+          result = std::move(next);
+          judgement = std::move(j);
+        }
+      }
+    }
     const SeedOptimizationResult& r = result.seeds;
 
     nlohmann::json history = nlohmann::json::array();
@@ -308,6 +406,10 @@ class RemeshModule final : public Module {
                                                                             : nlohmann::json()},
                                {"edge_length", r.edge_length}};
     report["refinement"] = refinement_json(result.refinement);
+    // The seeds the kept remesh has more than the first one.
+    report["repair_refinement"] = {
+        {"seeds_added", static_cast<long>(r.seeds.size() - seeds_before_repair)},
+        {"rounds", std::move(repair_rounds)}};
     report["optimizer"] = to_string(options.optimizer.kind);
     report["alpha"] = r.alpha;
     report["iterations"] = r.run.history.empty() ? 0 : r.run.history.back().iteration;
@@ -366,23 +468,11 @@ class RemeshModule final : public Module {
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 
-    // One verdict, `voroseal check`'s, on the model as written (cracks show only when the file
-    // is read back); nothing invalid goes to --output, --keep-invalid is where to look at it.
-    const std::shared_ptr<const StructuralModel> input_model = context.model;
-    const StructuralModel& input = *input_model;
+    // One verdict, `voroseal check`'s, on the model as written; nothing invalid goes to
+    // --output, --keep-invalid is where to look at it.
     context.model = std::make_shared<StructuralModel>(std::move(result.model));
-    const WriteOptions write{{context.input_path}};
-    const std::string out =
-        parameters.has("output") ? parameters.get_string("output") : std::string();
-    std::string text;
-    ValidityReport verdict;
-    if (!out.empty()) {
-      text = model_text(*context.model, out, write);
-      verdict = written_verdict(text, out);
-    } else {
-      verdict = check_model(*context.model);
-    }
-    verdict.checks.push_back(holes_made(input, *context.model, result.topology.input_part_of_output));
+    const std::string& text = judgement.text;
+    const ValidityReport& verdict = judgement.verdict;
     const bool valid = verdict.valid();
     report["valid"] = valid;
     report["validity"] = verdict_json(verdict);

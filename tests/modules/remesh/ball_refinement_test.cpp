@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "framework/model/model_builder.h"
 #include "modules/remesh/ball_refinement.h"
@@ -160,6 +161,42 @@ TEST(BallRefinement, LeavesALayerThinnerThanDminToTheMerges) {
   EXPECT_EQ(r.merges_left, 10);
   EXPECT_EQ(seeds.seeds, before);
   EXPECT_TRUE(seeds.vertex_density.empty());
+}
+
+// Where a remesh came out invalid: cells half the size there, growing back away from it.
+TEST(BallRefinement, RefinesAroundThePlacesOfAnInvalidRemesh) {
+  const StructuralModel model = build_model(test::flat_square(24));
+  SeedOptimizationResult seeds;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      seeds.seeds.push_back(local(model, 0.17 + 0.33 * i, 0.17 + 0.33 * j, 0.0));
+  Logger log(LogLevel::Quiet);
+  Progress quiet(false);
+  BallRefinementOptions refine;
+  SeedOptimizationResult untouched = seeds;
+  EXPECT_EQ(refine_at_places(model, untouched, SeedOptions{}, {}, refine, 0, log, quiet), 0);
+  EXPECT_EQ(untouched.seeds, seeds.seeds);
+
+  const Vec3 place = local(model, 0.8, 0.8, 0.0);
+  auto near = [&](const std::vector<Vec3>& x) {
+    return std::count_if(x.begin(), x.end(),
+                         [&](const Vec3& p) { return (p - place).norm() < 0.3; });
+  };
+  const long near_before = near(seeds.seeds);
+  const int added = refine_at_places(model, seeds, SeedOptions{}, {place}, refine, 0, log, quiet);
+  EXPECT_GT(added, 0);
+  EXPECT_EQ(static_cast<int>(seeds.seeds.size()), 9 + added);
+  EXPECT_GT(near(seeds.seeds), near_before);
+  ASSERT_EQ(seeds.vertex_density.size(), model.vertices.size());
+  // rho = (size / shrunk size)^4 at the place, 1 where the graded size is back to the cell's.
+  size_t at = 0, far = 0;
+  for (size_t v = 0; v < model.vertices.size(); ++v) {
+    if ((model.vertices[v] - place).norm() < (model.vertices[at] - place).norm()) at = v;
+    if ((model.vertices[v] - place).norm() > (model.vertices[far] - place).norm()) far = v;
+  }
+  EXPECT_NEAR(seeds.vertex_density[at], std::pow(1.0 / refine.shrink, 4), 1e-9);
+  EXPECT_LT(seeds.vertex_density[far], seeds.vertex_density[at]);
+  for (double rho : seeds.vertex_density) EXPECT_GE(rho, 1.0);
 }
 
 }  // namespace
