@@ -93,7 +93,13 @@ class TetmeshModule : public Module {
                          "at most this many surface bisection rounds (each halves the edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
-    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds};
+    ParameterSpec size{"size-rounds", ParameterType::Int, 8,
+                       "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
+                       "surface edges under tets over the bound (TetGen adds no point next to a kept coarse "
+                       "triangle); the command fails when the bound still does not hold"};
+    size.min = 0;
+    size.max = kMaxSizeRounds;
+    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds, size};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -108,6 +114,7 @@ class TetmeshModule : public Module {
     options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");
     options.refine_surface_below_deg = parameters.get_double("refine-surface-below");
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
+    options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
 
     const auto start = std::chrono::steady_clock::now();
     context.progress.start("tetmesh " + model.name, 0);
@@ -167,6 +174,10 @@ class TetmeshModule : public Module {
         {"surface_bisection", {{"rounds", run.surface_rounds},
                                {"edges", run.bisected_edges},
                                {"triangles", meshed.num_triangles()}}},
+        {"max_volume", {{"bound", options.max_volume > 0.0 ? nlohmann::json(options.max_volume) : nlohmann::json()},
+                        {"largest", quality.max_volume},
+                        {"size_rounds", run.size_rounds},
+                        {"edges", run.size_bisected_edges}}},
         {"thinnest_wedge_deg", wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
