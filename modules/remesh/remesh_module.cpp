@@ -46,10 +46,13 @@ void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::s
 }
 
 /// check_model() on `text` read back as the file `path` would be.
-ValidityReport written_verdict(const std::string& text, const std::string& path) {
+ValidityReport written_verdict(const std::string& text, const std::string& path,
+                               std::shared_ptr<const StructuralModel>& read_back) {
   try {
-    ValidityReport report = check_model(read_model_text(text, path));
+    auto model = std::make_shared<const StructuralModel>(read_model_text(text, path));
+    ValidityReport report = check_model(*model);
     report.model = path;
+    read_back = std::move(model);
     return report;
   } catch (const std::exception& e) {
     // A written model that does not read back is as invalid as can be.
@@ -376,9 +379,10 @@ class RemeshModule final : public Module {
         parameters.has("output") ? parameters.get_string("output") : std::string();
     std::string text;
     ValidityReport verdict;
+    std::shared_ptr<const StructuralModel> written;  // the output as read back from its text
     if (!out.empty()) {
       text = model_text(*context.model, out, write);
-      verdict = written_verdict(text, out);
+      verdict = written_verdict(text, out, written);
     } else {
       verdict = check_model(*context.model);
     }
@@ -411,6 +415,9 @@ class RemeshModule final : public Module {
       report["tetmesh_skipped"] = true;
     } else if (parameters.has("tetmesh")) {
       if (context.registry == nullptr) throw ParameterError("remesh --tetmesh: no module registry in this run");
+      // The model as written, read back as `tetmesh OUT` reads it: the file rounds coordinates
+      // and orders vertices and triangles its own way, and TetGen's mesh depends on both.
+      if (written) context.model = std::make_shared<StructuralModel>(*written);
       const Module& tetmesh = context.registry->get("tetmesh");
       tetmesh.run(context, Parameters(tetmesh.parameters(), {{"output", parameters.get_string("tetmesh")}}));
     }
