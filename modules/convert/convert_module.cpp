@@ -17,7 +17,8 @@ namespace {
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -50,8 +51,9 @@ class ConvertModule : public Module {
     if (context.volume && !context.model) {
       const VolumeMesh& mesh = *context.volume;
       if (!contains(writable_volume_extensions(), ext))
-        throw ParameterError(context.input_path + " holds " + std::to_string(mesh.tets.size()) + " tets; " + out +
-                             ": the " + ext + " format holds surfaces only, the tets would be lost (write " +
+        throw ParameterError(context.input_path + " holds " + std::to_string(mesh.tets.size()) +
+                             " tets; " + out + ": the " + ext +
+                             " format holds surfaces only, the tets would be lost (write " +
                              "a volume format: .mesh .vtu .msh .node .ele)");
       write_volume_mesh(mesh, out, write);
       context.report["convert"] = {{"input", context.input_path},
@@ -62,7 +64,8 @@ class ConvertModule : public Module {
     } else {
       if (!context.model) throw ModelError("convert needs a model or a volume mesh");
       if (!contains(writable_model_extensions(), ext))
-        throw ParameterError(out + ": the " + ext + " format holds tets, and " + context.input_path +
+        throw ParameterError(out + ": the " + ext + " format holds tets, and " +
+                             context.input_path +
                              " holds surfaces only (tet-mesh it with `voroseal tetmesh`)");
       write_model(*context.model, out, write);
       context.report["convert"] = {{"input", context.input_path}, {"output", out}};

@@ -14,8 +14,10 @@
 
 namespace voroseal {
 
-std::vector<std::array<int, 2>> surface_edges_under(const StructuralModel& model, const VolumeMesh& mesh,
-                                                    const std::vector<long>& tets, bool every_vertex) {
+std::vector<std::array<int, 2>> surface_edges_under(const StructuralModel& model,
+                                                    const VolumeMesh& mesh,
+                                                    const std::vector<long>& tets,
+                                                    bool every_vertex) {
   const ModelTriangles flat = flatten(model);
   const std::vector<int> vertex_of_point = plc_vertices(flat, model.vertices.size());
   std::unordered_set<std::uint64_t> surface_edges;
@@ -70,29 +72,35 @@ Vec3 tet_circumcentre(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   const Vec3 u = b - a, v = c - a, w = d - a;
   const double det = 2.0 * u.dot(v.cross(w));
   if (!(std::abs(det) > 0.0)) return (a + b + c + d) / 4.0;
-  return a + (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) + w.squaredNorm() * u.cross(v)) / det;
+  return a + (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u) +
+              w.squaredNorm() * u.cross(v)) /
+                 det;
 }
 
 }  // namespace
 
-std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model, const VolumeMesh& mesh,
+std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model,
+                                                    const VolumeMesh& mesh,
                                                     const std::vector<long>& tets) {
   const ModelTriangles flat = flatten(model);
   std::vector<Ball> balls;
   balls.reserve(flat.triangles.size());
   double mean_radius = 0.0;
   for (const Triangle& t : flat.triangles) {
-    balls.push_back(diametral_ball(model.vertices[t[0]], model.vertices[t[1]], model.vertices[t[2]]));
+    balls.push_back(
+        diametral_ball(model.vertices[t[0]], model.vertices[t[1]], model.vertices[t[2]]));
     mean_radius += balls.back().radius / static_cast<double>(flat.triangles.size());
   }
   // A uniform grid of cells twice the mean radius; each ball is listed in the cells its box meets.
   const double cell = std::max(2.0 * mean_radius, 1e-300);
   auto cell_of = [&](const Vec3& p) {
-    return std::array<long, 3>{static_cast<long>(std::floor(p.x() / cell)), static_cast<long>(std::floor(p.y() / cell)),
+    return std::array<long, 3>{static_cast<long>(std::floor(p.x() / cell)),
+                               static_cast<long>(std::floor(p.y() / cell)),
                                static_cast<long>(std::floor(p.z() / cell))};
   };
   auto key = [](long x, long y, long z) {
-    return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
+    return (static_cast<std::uint64_t>(x) * 73856093u) ^
+           (static_cast<std::uint64_t>(y) * 19349663u) ^
            (static_cast<std::uint64_t>(z) * 83492791u);
   };
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
@@ -106,7 +114,8 @@ std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model
   std::set<std::array<int, 2>> edges;
   for (long index : tets) {
     const Tetrahedron& t = mesh.tets[index];
-    const Vec3 c = tet_circumcentre(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
+    const Vec3 c = tet_circumcentre(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                                    mesh.vertices[t[3]]);
     const auto at = cell_of(c);
     const auto found = grid.find(key(at[0], at[1], at[2]));
     if (found == grid.end()) continue;
@@ -116,7 +125,8 @@ std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model
       int a = tri[0], b = tri[1];
       double longest = -1.0;
       for (int k = 0; k < 3; ++k) {
-        const double length = (model.vertices[tri[k]] - model.vertices[tri[(k + 1) % 3]]).squaredNorm();
+        const double length =
+            (model.vertices[tri[k]] - model.vertices[tri[(k + 1) % 3]]).squaredNorm();
         if (length > longest) longest = length, a = tri[k], b = tri[(k + 1) % 3];
       }
       edges.insert({std::min(a, b), std::max(a, b)});
@@ -129,11 +139,12 @@ std::vector<long> tets_over_volume(const VolumeMesh& mesh, double max_volume) {
   std::vector<std::pair<double, long>> over;
   for (size_t i = 0; i < mesh.tets.size(); ++i) {
     const Tetrahedron& t = mesh.tets[i];
-    const double v = std::abs(
-        tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]));
+    const double v = std::abs(tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                         mesh.vertices[t[2]], mesh.vertices[t[3]]));
     if (v > max_volume) over.emplace_back(v, static_cast<long>(i));
   }
-  std::sort(over.begin(), over.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(over.begin(), over.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<long> result;
   result.reserve(over.size());
   for (const auto& entry : over) result.push_back(entry.second);

@@ -15,14 +15,17 @@ namespace voroseal {
 /// edges of `model`, and (when it has none, or always with `every_vertex`) the longest surface
 /// edge at each of its vertices on a surface. Tets with no vertex on a surface give nothing.
 /// Pairs of model vertex ids (smaller first), sorted, without repeats.
-std::vector<std::array<int, 2>> surface_edges_under(const StructuralModel& model, const VolumeMesh& mesh,
-                                                    const std::vector<long>& tets, bool every_vertex);
+std::vector<std::array<int, 2>> surface_edges_under(const StructuralModel& model,
+                                                    const VolumeMesh& mesh,
+                                                    const std::vector<long>& tets,
+                                                    bool every_vertex);
 
 /// For each of `tets` of `mesh`: the longest edge of every triangle of `model` whose diametral
 /// ball (the smallest sphere through its corners) holds the tet's circumcentre. Under Y TetGen
 /// refuses that circumcentre as a new point because of those triangles: bisecting them is what
 /// lets it split the tet. Pairs of model vertex ids (smaller first), sorted, without repeats.
-std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model, const VolumeMesh& mesh,
+std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model,
+                                                    const VolumeMesh& mesh,
                                                     const std::vector<long>& tets);
 
 /// The tets of `mesh` whose volume exceeds `max_volume` (> 0), the largest first.

@@ -93,10 +93,11 @@ class TetmeshModule : public Module {
                          "at most this many surface bisection rounds (each halves the edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
-    ParameterSpec size{"size-rounds", ParameterType::Int, 8,
-                       "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
-                       "surface edges under tets over the bound (TetGen adds no point next to a kept coarse "
-                       "triangle); the command fails when the bound still does not hold"};
+    ParameterSpec size{
+        "size-rounds", ParameterType::Int, 8,
+        "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
+        "surface edges under tets over the bound (TetGen adds no point next to a kept coarse "
+        "triangle); the command fails when the bound still does not hold"};
     size.min = 0;
     size.max = kMaxSizeRounds;
     return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds, size};
@@ -158,7 +159,10 @@ class TetmeshModule : public Module {
     const std::vector<ContactWedge> wedges = thin_contact_wedges(model, kWedgeReportDeg);
     nlohmann::json report = {
         {"switches", run.switches},
-        {"input", {{"points", run.input_points}, {"triangles", run.input_facets}, {"regions", model.regions.size()}}},
+        {"input",
+         {{"points", run.input_points},
+          {"triangles", run.input_facets},
+          {"regions", model.regions.size()}}},
         {"vertices", quality.vertices},
         {"steiner_points", run.steiner_points},
         {"tets", quality.tets},
@@ -171,14 +175,18 @@ class TetmeshModule : public Module {
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
-        {"surface_bisection", {{"rounds", run.surface_rounds},
-                               {"edges", run.bisected_edges},
-                               {"triangles", meshed.num_triangles()}}},
-        {"max_volume", {{"bound", options.max_volume > 0.0 ? nlohmann::json(options.max_volume) : nlohmann::json()},
-                        {"largest", quality.max_volume},
-                        {"size_rounds", run.size_rounds},
-                        {"edges", run.size_bisected_edges}}},
-        {"thinnest_wedge_deg", wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
+        {"surface_bisection",
+         {{"rounds", run.surface_rounds},
+          {"edges", run.bisected_edges},
+          {"triangles", meshed.num_triangles()}}},
+        {"max_volume",
+         {{"bound",
+           options.max_volume > 0.0 ? nlohmann::json(options.max_volume) : nlohmann::json()},
+          {"largest", quality.max_volume},
+          {"size_rounds", run.size_rounds},
+          {"edges", run.size_bisected_edges}}},
+        {"thinnest_wedge_deg",
+         wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},

@@ -16,13 +16,13 @@
 #include <unordered_set>
 
 #include "framework/core/error.h"
+#include "framework/geometry/triangle_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "modules/tetmesh/surface_bisection.h"
 #include "modules/tetmesh/tet_surface_edges.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "modules/tetmesh/triangle_tree.h"
-#include "framework/geometry/triangle_quality.h"
-#include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
 
@@ -780,8 +780,8 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
 
 /// The surface edges to bisect against the tets of `mesh` flatter than `bound_deg` that are not
 /// in a wedge between two surfaces (no bisection opens those); see surface_edges_under().
-std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& model, const VolumeMesh& mesh,
-                                                      double bound_deg) {
+std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& model,
+                                                      const VolumeMesh& mesh, double bound_deg) {
   const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
   std::vector<long> flat;
   for (size_t i = 0; i < mesh.tets.size(); ++i) {
@@ -798,8 +798,8 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
 /// the diametral ball of a kept surface triangle, so a tet over max_volume next to a coarse
 /// triangle stays; the surface edges under such tets are bisected and TetGen runs again until
 /// every tet is within the bound. Every round is kept: the bound, not the angles, is the aim.
-void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log, TetmeshRun& info,
-                     ConvertedMesh& best) {
+void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                     TetmeshRun& info, ConvertedMesh& best) {
   if (!options.keep_surface || !(options.max_volume > 0.0)) return;
   double seconds = info.plc_seconds + info.tetgen_seconds;
   std::shared_ptr<const StructuralModel> refined;
@@ -821,7 +821,8 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
       if (split == 0) break;
       mesh = mesh_with_tetgen(*next, options, log, trial);
     } catch (const MesherError& e) {
-      log.warning(std::string("tetmesh: size round ") + std::to_string(round) + " failed (" + e.what() + ")");
+      log.warning(std::string("tetmesh: size round ") + std::to_string(round) + " failed (" +
+                  e.what() + ")");
       break;
     }
     seconds += trial.plc_seconds + trial.tetgen_seconds;
@@ -839,33 +840,39 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
   info.refined_model = refined;
   info.tetgen_seconds = seconds - info.plc_seconds;
   if (refined)
-    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(rounds) +
-             " rounds (same surfaces, finer triangles) under tets over --max-volume " + number(options.max_volume));
+    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
+             std::to_string(rounds) +
+             " rounds (same surfaces, finer triangles) under tets over --max-volume " +
+             number(options.max_volume));
 }
 
 /// Throws when a tet of `mesh` exceeds options.max_volume (TetGen's bound, and a last check:
 /// TetGen's smoothing moves points after refinement), saying why the bound could not hold.
-void require_volume_bound(const StructuralModel& model, const TetmeshOptions& options, const TetmeshRun& info,
-                          const VolumeMesh& mesh) {
+void require_volume_bound(const StructuralModel& model, const TetmeshOptions& options,
+                          const TetmeshRun& info, const VolumeMesh& mesh) {
   if (!(options.max_volume > 0.0)) return;
-  const std::vector<long> over = tets_over_volume(mesh, options.max_volume * (1.0 + kVolumeBoundSlack));
+  const std::vector<long> over =
+      tets_over_volume(mesh, options.max_volume * (1.0 + kVolumeBoundSlack));
   if (over.empty()) return;
   const Tetrahedron& t = mesh.tets[over.front()];
-  const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]};
+  const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                     mesh.vertices[t[3]]};
   const double largest = std::abs(tet_volume(p[0], p[1], p[2], p[3]));
   const int region = mesh.tet_region[over.front()];
   const StructuralModel& meshed = info.refined_model ? *info.refined_model : model;
   std::ostringstream message;
-  message << "--max-volume " << number(options.max_volume) << " cannot hold on model '" << model.name << "': "
-          << over.size() << " tets are larger, the largest " << number(largest) << " at "
-          << file_point(model, (p[0] + p[1] + p[2] + p[3]) / 4.0);
+  message << "--max-volume " << number(options.max_volume) << " cannot hold on model '"
+          << model.name << "': " << over.size() << " tets are larger, the largest "
+          << number(largest) << " at " << file_point(model, (p[0] + p[1] + p[2] + p[3]) / 4.0);
   if (region >= 0 && region < static_cast<int>(model.regions.size()))
     message << " in region '" << model.regions[region].name << "'";
   if (options.keep_surface)
-    message << ". With the surfaces kept (TetGen switch Y) no point goes inside the diametral ball of a "
+    message << ". With the surfaces kept (TetGen switch Y) no point goes inside the diametral ball "
+               "of a "
                "surface triangle, so the tets next to a triangle are about as large as it is wide; "
-            << info.size_rounds << " rounds of surface bisection (" << info.size_bisected_edges << " edges, "
-            << meshed.num_triangles() << " triangles now) were not enough. Remesh the surfaces finer, "
+            << info.size_rounds << " rounds of surface bisection (" << info.size_bisected_edges
+            << " edges, " << meshed.num_triangles()
+            << " triangles now) were not enough. Remesh the surfaces finer, "
                "allow more --size-rounds, give a larger bound, or mesh with --no-keep-surface";
   else
     message << " (TetGen's own refinement did not reach the bound)";
@@ -947,8 +954,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     throw ParameterError("surface bisection rounds " + std::to_string(options.refine_surface_rounds) +
                          " out of range [0, 10]");
   if (!(options.size_rounds >= 0 && options.size_rounds <= kMaxSizeRounds))
-    throw ParameterError("size rounds " + std::to_string(options.size_rounds) + " out of range [0, " +
-                         std::to_string(kMaxSizeRounds) + "]");
+    throw ParameterError("size rounds " + std::to_string(options.size_rounds) +
+                         " out of range [0, " + std::to_string(kMaxSizeRounds) + "]");
   if (!(options.attempts >= 1 && options.attempts <= 10))
     throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
 

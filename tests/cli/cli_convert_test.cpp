@@ -55,7 +55,7 @@ TEST_F(CliConvert, KeepsTetsRegionsAndSurfacesThroughEveryVolumeFormat) {
 }
 
 TEST_F(CliConvert, RefusesAFormatThatCannotHoldTets) {
-  for (const std::string& target : {"x.ts", "x.obj", "x.ml"}) {
+  for (const char* target : {"x.ts", "x.obj", "x.ml"}) {
     const CliResult r = run_voroseal({"convert", source_, dir_ / target});
     EXPECT_EQ(r.exit_code, 2) << target;
     EXPECT_NE(r.err.find("the tets would be lost"), std::string::npos) << r.err;

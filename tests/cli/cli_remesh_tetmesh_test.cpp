@@ -20,8 +20,8 @@ TEST(CliRemeshTetmesh, GivesTheMeshThatTetmeshGivesOnTheWrittenModel) {
   CliDir dir("cli_remesh_tetmesh");
   const std::string model = dir / "box.ts";
   write_box_model(model, 6);
-  const CliResult remesh = run_voroseal(
-      {"-q", "remesh", model, "--seeds", "400", "-o", dir / "r.ml", "--tetmesh", dir / "direct.mesh"});
+  const CliResult remesh = run_voroseal({"-q", "remesh", model, "--seeds", "400", "-o",
+                                         dir / "r.ml", "--tetmesh", dir / "direct.mesh"});
   ASSERT_EQ(remesh.exit_code, 0) << remesh.err;
   const CliResult tetmesh = run_voroseal({"-q", "tetmesh", dir / "r.ml", "-o", dir / "file.mesh"});
   ASSERT_EQ(tetmesh.exit_code, 0) << tetmesh.err;

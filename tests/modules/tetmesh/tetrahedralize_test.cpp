@@ -198,8 +198,8 @@ TEST(Tetrahedralize, MaxVolumeBoundsEveryTetWhenTheSurfaceMayBeSplit) {
 double largest_tet(const VolumeMesh& mesh) {
   double largest = 0;
   for (const Tetrahedron& t : mesh.tets)
-    largest = std::max(largest, tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
-                                           mesh.vertices[t[3]]));
+    largest = std::max(largest, tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                           mesh.vertices[t[2]], mesh.vertices[t[3]]));
   return largest;
 }
 
@@ -231,7 +231,8 @@ TEST(Tetrahedralize, MaxVolumeThatCannotHoldIsAnError) {
     tetrahedralize(model, options, log);
     FAIL() << "tets over the bound were returned";
   } catch (const MesherError& e) {
-    EXPECT_NE(std::string(e.what()).find("--max-volume 0.001 cannot hold"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--max-volume 0.001 cannot hold"), std::string::npos)
+        << e.what();
   }
 }
 
