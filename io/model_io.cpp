@@ -140,6 +140,20 @@ VolumeMesh read_volume_mesh(const std::string& path) {
   throw InputError(path, 0, "unknown volume mesh extension '" + ext + "' (supported: .mesh .vtu .msh .node .ele .face)");
 }
 
+std::optional<VolumeMesh> read_tets_if_any(const std::string& path) {
+  const std::string ext = extension(path);
+  if (ext == ".node" || ext == ".ele" || ext == ".face") return read_volume_mesh(path);
+  if (ext != ".mesh" && ext != ".vtu" && ext != ".msh") return std::nullopt;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return std::nullopt;
+  try {
+    VolumeMesh mesh = read_volume_mesh(path);
+    if (!mesh.tets.empty()) return mesh;
+  } catch (const InputError&) {
+  }
+  return std::nullopt;
+}
+
 void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const WriteOptions& options) {
   const std::string ext = extension(path);
   const int precision = options.precision;

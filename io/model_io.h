@@ -10,6 +10,7 @@
 // refuse to write over any path in WriteOptions::protected_paths (the inputs of the run).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,11 @@ void write_text(const std::string& text, const std::string& path, const WriteOpt
 /// .node/.ele/.face; the .face file is optional). Vertices are moved to a local frame.
 /// \throws InputError
 VolumeMesh read_volume_mesh(const std::string& path);
+/// The volume mesh in `path` when it holds tets: TetGen files (read errors thrown), or a .mesh,
+/// .vtu or .msh file that reads as a volume mesh with tets; nullopt otherwise (other formats,
+/// surfaces only, or a file the volume reader refuses: the model reader then says why).
+/// \throws InputError for TetGen files
+std::optional<VolumeMesh> read_tets_if_any(const std::string& path);
 /// \throws OutputError
 void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const WriteOptions& options = {});
 

@@ -135,7 +135,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   q.region_tets.assign(max_region + 1, 0);
 
   double min_dihedral = 180.0, max_dihedral = 0.0, max_ratio = 0.0, sum_ratio = 0.0;
-  double min_volume = std::numeric_limits<double>::infinity();
+  double min_volume = std::numeric_limits<double>::infinity(), max_volume = 0.0;
   long nonpositive = 0, repeated = 0;
   const long n = q.tets;
 #pragma omp parallel
@@ -143,7 +143,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
     std::vector<double> region_volume(q.region_volume.size(), 0.0);
     std::vector<long> region_tets(q.region_tets.size(), 0);
     double local_min_dihedral = 180.0, local_max_dihedral = 0.0, local_max_ratio = 0.0, local_sum_ratio = 0.0;
-    double local_min_volume = std::numeric_limits<double>::infinity();
+    double local_min_volume = std::numeric_limits<double>::infinity(), local_max_volume = 0.0;
     long local_nonpositive = 0, local_repeated = 0;
 #pragma omp for schedule(static) nowait
     for (long t = 0; t < n; ++t) {
@@ -154,6 +154,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       const Vec3& d = mesh.vertices[tet[3]];
       const double volume = tet_volume(a, b, c, d);
       local_min_volume = std::min(local_min_volume, volume);
+      local_max_volume = std::max(local_max_volume, volume);
       if (has_repeated_vertex(tet))
         ++local_repeated;
       else if (tet_orientation(mesh, static_cast<size_t>(t)) <= 0)
@@ -178,6 +179,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       max_ratio = std::max(max_ratio, local_max_ratio);
       sum_ratio += local_sum_ratio;
       min_volume = std::min(min_volume, local_min_volume);
+      max_volume = std::max(max_volume, local_max_volume);
       nonpositive += local_nonpositive;
       repeated += local_repeated;
       for (size_t r = 0; r < region_volume.size(); ++r) {
@@ -191,6 +193,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   q.max_radius_edge = max_ratio;
   q.mean_radius_edge = n > 0 ? sum_ratio / static_cast<double>(n) : 0.0;
   q.min_volume = n > 0 ? min_volume : 0.0;
+  q.max_volume = max_volume;
   q.nonpositive_tets = nonpositive;
   q.repeated_vertex_tets = repeated;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {

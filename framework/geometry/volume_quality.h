@@ -19,6 +19,7 @@ struct VolumeQuality {
   double max_radius_edge = 0.0;     // circumradius / shortest edge; √6/4 ≈ 0.612 for a regular tet
   double mean_radius_edge = 0.0;
   double min_volume = 0.0;          // smallest signed tet volume
+  double max_volume = 0.0;          // largest signed tet volume (0 when there are none)
   /// Tets whose orientation is not strictly positive (exact predicate): flat or inverted, with
   /// four distinct vertices.
   long nonpositive_tets = 0;

@@ -20,6 +20,9 @@ class Module {
   virtual std::vector<ParameterSpec> parameters() const = 0;
   /// True when the module needs a model in the context (read from the positional input).
   virtual bool needs_model() const { return true; }
+  /// True when an input holding tets (a volume mesh, TetGen files) is read as a volume mesh into
+  /// context.volume instead of as a model (whose reading would keep its triangles only).
+  virtual bool reads_volume_mesh() const { return false; }
   /// Runs the step. Reads and updates `context` (model, volume, report).
   /// \throws ParameterError, ModelError, MesherError, InputError, OutputError
   virtual void run(Context& context, const Parameters& parameters) const = 0;

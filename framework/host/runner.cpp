@@ -1,6 +1,8 @@
 #include "framework/host/runner.h"
 
 #include <exception>
+#include <optional>
+#include <utility>
 
 #include "framework/core/error.h"
 #include "framework/host/output_paths.h"
@@ -14,15 +16,24 @@ void load_model(Context& context, const std::string& path, const ReadOptions& op
   context.model = std::make_shared<StructuralModel>(*model);
 }
 
+bool load_volume_mesh(Context& context, const std::string& path) {
+  std::optional<VolumeMesh> mesh = read_tets_if_any(path);
+  if (!mesh) return false;
+  context.volume = std::make_shared<VolumeMesh>(std::move(*mesh));
+  context.input_path = path;
+  return true;
+}
+
 void run_module(const ModuleRegistry& registry, const ModuleRun& run, Context& context) {
   const Module& module = registry.get(run.module);
   context.registry = &registry;
   const Parameters parameters(module.parameters(), run.parameters);
   check_output_paths(module.parameters(), parameters,
                      {context.input_path.empty() ? run.input : context.input_path});
-  if (module.needs_model() && !context.model) {
+  if (module.needs_model() && !context.model && !(module.reads_volume_mesh() && context.volume)) {
     if (run.input.empty()) throw ParameterError(run.module + ": a model file is required");
-    load_model(context, run.input, run.read);
+    if (!(module.reads_volume_mesh() && load_volume_mesh(context, run.input)))
+      load_model(context, run.input, run.read);
   }
   module.run(context, parameters);
 }

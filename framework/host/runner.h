@@ -29,6 +29,8 @@ struct ModuleRun {
 /// Reads the input into the context (input and a working copy as model).
 /// \throws InputError, ModelError
 void load_model(Context& context, const std::string& path, const ReadOptions& options);
+/// Reads `path` into context.volume when it holds tets (read_tets_if_any); false otherwise.
+bool load_volume_mesh(Context& context, const std::string& path);
 
 /// Validates the parameters and runs the module on the context (loading the input first when
 /// the module needs a model and the context has none). Exceptions propagate.

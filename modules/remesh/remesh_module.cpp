@@ -56,10 +56,13 @@ void dump_seeds(const std::vector<Vec3>& seeds, const Frame& frame, const std::s
 
 /// check_model() on `text` read back as the file `path` would be.
 ValidityReport written_verdict(const std::string& text, const std::string& path,
-                               const CheckOptions& options) {
+                               const CheckOptions& options,
+                               std::shared_ptr<const StructuralModel>& read_back) {
   try {
-    ValidityReport report = check_model(read_model_text(text, path), options);
+    auto model = std::make_shared<const StructuralModel>(read_model_text(text, path));
+    ValidityReport report = check_model(*model, options);
     report.model = path;
+    read_back = std::move(model);
     return report;
   } catch (const std::exception& e) {
     // A written model that does not read back is as invalid as can be.
@@ -110,6 +113,7 @@ CheckEntry holes_made(const StructuralModel& input, const StructuralModel& outpu
 struct Judgement {
   std::string text;
   ValidityReport verdict;
+  std::shared_ptr<const StructuralModel> written;  // the output as read back from `text`
   long regions_gained = 0;
   /// What the refinement of an invalid remesh removes: the failed checks' counts and the
   /// regions gained (pockets left).
@@ -128,7 +132,7 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
   Judgement j;
   if (!out.empty()) {
     j.text = model_text(result.model, out, write);
-    j.verdict = written_verdict(j.text, out, options);
+    j.verdict = written_verdict(j.text, out, options, j.written);
   } else {
     j.verdict = check_model(result.model, options);
   }
@@ -501,6 +505,10 @@ class RemeshModule final : public Module {
       report["tetmesh_skipped"] = true;
     } else if (parameters.has("tetmesh")) {
       if (context.registry == nullptr) throw ParameterError("remesh --tetmesh: no module registry in this run");
+      // The model as written, read back as `tetmesh OUT` reads it: the file rounds coordinates
+      // and orders vertices and triangles its own way, and TetGen's mesh depends on both.
+      if (judgement.written)
+        context.model = std::make_shared<StructuralModel>(*judgement.written);
       const Module& tetmesh = context.registry->get("tetmesh");
       tetmesh.run(context, Parameters(tetmesh.parameters(), {{"output", parameters.get_string("tetmesh")}}));
     }

@@ -93,7 +93,14 @@ class TetmeshModule : public Module {
                          "at most this many surface bisection rounds (each halves the edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
-    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds};
+    ParameterSpec size{
+        "size-rounds", ParameterType::Int, 8,
+        "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
+        "surface edges under tets over the bound (TetGen adds no point next to a kept coarse "
+        "triangle); the command fails when the bound still does not hold"};
+    size.min = 0;
+    size.max = kMaxSizeRounds;
+    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds, size};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -108,6 +115,7 @@ class TetmeshModule : public Module {
     options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");
     options.refine_surface_below_deg = parameters.get_double("refine-surface-below");
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
+    options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
 
     const auto start = std::chrono::steady_clock::now();
     context.progress.start("tetmesh " + model.name, 0);
@@ -151,7 +159,10 @@ class TetmeshModule : public Module {
     const std::vector<ContactWedge> wedges = thin_contact_wedges(model, kWedgeReportDeg);
     nlohmann::json report = {
         {"switches", run.switches},
-        {"input", {{"points", run.input_points}, {"triangles", run.input_facets}, {"regions", model.regions.size()}}},
+        {"input",
+         {{"points", run.input_points},
+          {"triangles", run.input_facets},
+          {"regions", model.regions.size()}}},
         {"vertices", quality.vertices},
         {"steiner_points", run.steiner_points},
         {"tets", quality.tets},
@@ -164,10 +175,18 @@ class TetmeshModule : public Module {
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
-        {"surface_bisection", {{"rounds", run.surface_rounds},
-                               {"edges", run.bisected_edges},
-                               {"triangles", meshed.num_triangles()}}},
-        {"thinnest_wedge_deg", wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
+        {"surface_bisection",
+         {{"rounds", run.surface_rounds},
+          {"edges", run.bisected_edges},
+          {"triangles", meshed.num_triangles()}}},
+        {"max_volume",
+         {{"bound",
+           options.max_volume > 0.0 ? nlohmann::json(options.max_volume) : nlohmann::json()},
+          {"largest", quality.max_volume},
+          {"size_rounds", run.size_rounds},
+          {"edges", run.size_bisected_edges}}},
+        {"thinnest_wedge_deg",
+         wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},

@@ -15,18 +15,21 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
+#include "framework/geometry/triangle_quality.h"
+#include "framework/geometry/volume_quality.h"
 #include "modules/tetmesh/surface_bisection.h"
+#include "modules/tetmesh/tet_surface_edges.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
 #include "modules/tetmesh/triangle_tree.h"
-#include "framework/geometry/triangle_quality.h"
-#include "framework/geometry/volume_quality.h"
 
 namespace voroseal {
 
 namespace {
+
+// Relative rounding slack on --max-volume when the mesh is checked against it.
+constexpr double kVolumeBoundSlack = 1e-9;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -776,45 +779,104 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
 }
 
 /// The surface edges to bisect against the tets of `mesh` flatter than `bound_deg` that are not
-/// in a wedge between two surfaces (no bisection opens those): a tet's own edges that are
-/// surface edges (a layer sliver's two edges on its two sides), else the longest surface edge at
-/// each of its vertices that lies on a surface. Pairs of model vertex ids.
-std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& model, const VolumeMesh& mesh,
-                                                      double bound_deg) {
-  const ModelTriangles flat = flatten(model);
-  const std::vector<int> vertex_of_point = plc_vertices(flat, model.vertices.size());
-  std::unordered_set<std::uint64_t> surface_edges;
-  // Per model vertex: its longest surface edge (squared length, other end).
-  std::vector<std::pair<double, int>> longest(model.vertices.size(), {-1.0, -1});
-  for (const Triangle& t : flat.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      surface_edges.insert(edge_key(a, b));
-      const double length = (model.vertices[a] - model.vertices[b]).squaredNorm();
-      if (length > longest[a].first) longest[a] = {length, b};
-      if (length > longest[b].first) longest[b] = {length, a};
-    }
+/// in a wedge between two surfaces (no bisection opens those); see surface_edges_under().
+std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& model,
+                                                      const VolumeMesh& mesh, double bound_deg) {
   const std::unordered_set<Key, KeyHash> surface_faces = surface_face_set(mesh);
-  std::set<std::array<int, 2>> edges;
-  auto add = [&](int a, int b) { edges.insert({std::min(a, b), std::max(a, b)}); };
-  for (const Tetrahedron& t : mesh.tets) {
+  std::vector<long> flat;
+  for (size_t i = 0; i < mesh.tets.size(); ++i) {
+    const Tetrahedron& t = mesh.tets[i];
     const auto dihedral = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], mesh.vertices[t[3]]);
     if (*std::min_element(dihedral.begin(), dihedral.end()) >= bound_deg) continue;
     if (surface_wedge(faces_on_surface(surface_faces, t), dihedral, bound_deg)) continue;
-    int v[4];
-    for (int k = 0; k < 4; ++k) v[k] = t[k] < static_cast<int>(vertex_of_point.size()) ? vertex_of_point[t[k]] : -1;
-    bool own = false;
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        if (v[a] >= 0 && v[b] >= 0 && surface_edges.count(edge_key(v[a], v[b]))) {
-          add(v[a], v[b]);
-          own = true;
-        }
-    if (own) continue;
-    for (int k = 0; k < 4; ++k)
-      if (v[k] >= 0 && longest[v[k]].second >= 0) add(v[k], longest[v[k]].second);
+    flat.push_back(static_cast<long>(i));
   }
-  return {edges.begin(), edges.end()};
+  return surface_edges_under(model, mesh, flat, false);
+}
+
+/// Size rounds (see TetmeshOptions::size_rounds): under Y, TetGen rejects every point inside
+/// the diametral ball of a kept surface triangle, so a tet over max_volume next to a coarse
+/// triangle stays; the surface edges under such tets are bisected and TetGen runs again until
+/// every tet is within the bound. Every round is kept: the bound, not the angles, is the aim.
+void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                     TetmeshRun& info, ConvertedMesh& best) {
+  if (!options.keep_surface || !(options.max_volume > 0.0)) return;
+  double seconds = info.plc_seconds + info.tetgen_seconds;
+  std::shared_ptr<const StructuralModel> refined;
+  int bisected = 0, rounds = 0;
+  for (int round = 1; round <= options.size_rounds; ++round) {
+    const std::vector<long> over = tets_over_volume(best.mesh, options.max_volume);
+    if (over.empty()) break;
+    const StructuralModel& from = refined ? *refined : model;
+    std::vector<std::array<int, 2>> edges = edges_encroached_by(from, best.mesh, over);
+    const std::vector<std::array<int, 2>> under = surface_edges_under(from, best.mesh, over, true);
+    edges.insert(edges.end(), under.begin(), under.end());
+    if (edges.empty()) break;  // no surface vertex under them: nothing to bisect
+    auto next = std::make_shared<StructuralModel>(from);
+    TetmeshRun trial;
+    ConvertedMesh mesh;
+    int split = 0;
+    try {
+      split = bisect_edges(*next, edges);
+      if (split == 0) break;
+      mesh = mesh_with_tetgen(*next, options, log, trial);
+    } catch (const MesherError& e) {
+      log.warning(std::string("tetmesh: size round ") + std::to_string(round) + " failed (" +
+                  e.what() + ")");
+      break;
+    }
+    seconds += trial.plc_seconds + trial.tetgen_seconds;
+    log.debug("tetmesh: size round " + std::to_string(round) + ": " + std::to_string(over.size()) +
+              " tets over " + number(options.max_volume) + ", " + std::to_string(split) +
+              " surface edges split, " + std::to_string(next->num_triangles()) + " triangles");
+    bisected += split;
+    rounds = round;
+    info = std::move(trial);
+    best = std::move(mesh);
+    refined = std::move(next);
+  }
+  info.size_rounds = rounds;
+  info.size_bisected_edges = bisected;
+  info.refined_model = refined;
+  info.tetgen_seconds = seconds - info.plc_seconds;
+  if (refined)
+    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
+             std::to_string(rounds) +
+             " rounds (same surfaces, finer triangles) under tets over --max-volume " +
+             number(options.max_volume));
+}
+
+/// Throws when a tet of `mesh` exceeds options.max_volume (TetGen's bound, and a last check:
+/// TetGen's smoothing moves points after refinement), saying why the bound could not hold.
+void require_volume_bound(const StructuralModel& model, const TetmeshOptions& options,
+                          const TetmeshRun& info, const VolumeMesh& mesh) {
+  if (!(options.max_volume > 0.0)) return;
+  const std::vector<long> over =
+      tets_over_volume(mesh, options.max_volume * (1.0 + kVolumeBoundSlack));
+  if (over.empty()) return;
+  const Tetrahedron& t = mesh.tets[over.front()];
+  const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                     mesh.vertices[t[3]]};
+  const double largest = std::abs(tet_volume(p[0], p[1], p[2], p[3]));
+  const int region = mesh.tet_region[over.front()];
+  const StructuralModel& meshed = info.refined_model ? *info.refined_model : model;
+  std::ostringstream message;
+  message << "--max-volume " << number(options.max_volume) << " cannot hold on model '"
+          << model.name << "': " << over.size() << " tets are larger, the largest "
+          << number(largest) << " at " << file_point(model, (p[0] + p[1] + p[2] + p[3]) / 4.0);
+  if (region >= 0 && region < static_cast<int>(model.regions.size()))
+    message << " in region '" << model.regions[region].name << "'";
+  if (options.keep_surface)
+    message << ". With the surfaces kept (TetGen switch Y) no point goes inside the diametral ball "
+               "of a "
+               "surface triangle, so the tets next to a triangle are about as large as it is wide; "
+            << info.size_rounds << " rounds of surface bisection (" << info.size_bisected_edges
+            << " edges, " << meshed.num_triangles()
+            << " triangles now) were not enough. Remesh the surfaces finer, "
+               "allow more --size-rounds, give a larger bound, or mesh with --no-keep-surface";
+  else
+    message << " (TetGen's own refinement did not reach the bound)";
+  throw MesherError(message.str());
 }
 
 /// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
@@ -826,7 +888,8 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
   double best_angle = min_dihedral(best.mesh);
   double seconds = info.plc_seconds + info.tetgen_seconds;  // every round's, kept or not
-  std::shared_ptr<const StructuralModel> refined;
+  std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
+  const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
   int bisected = 0;
   for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
     const StructuralModel& from = refined ? *refined : model;
@@ -849,6 +912,7 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
               " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
     if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
+    if (options.max_volume > 0.0 && !tets_over_volume(mesh.mesh, options.max_volume).empty()) break;
     bisected += split;
     trial.surface_rounds = round;
     info = std::move(trial);
@@ -858,8 +922,10 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   }
   info.bisected_edges = bisected;
   info.refined_model = refined;
+  info.size_rounds = size_rounds;
+  info.size_bisected_edges = size_edges;
   info.tetgen_seconds = seconds - info.plc_seconds;
-  if (refined)
+  if (bisected > 0)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
              " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
              " deg: min dihedral " + number(best_angle) + " deg");
@@ -887,6 +953,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   if (!(options.refine_surface_rounds >= 0 && options.refine_surface_rounds <= 10))
     throw ParameterError("surface bisection rounds " + std::to_string(options.refine_surface_rounds) +
                          " out of range [0, 10]");
+  if (!(options.size_rounds >= 0 && options.size_rounds <= kMaxSizeRounds))
+    throw ParameterError("size rounds " + std::to_string(options.size_rounds) +
+                         " out of range [0, " + std::to_string(kMaxSizeRounds) + "]");
   if (!(options.attempts >= 1 && options.attempts <= 10))
     throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
 
@@ -894,7 +963,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   TetmeshRun& info = run != nullptr ? *run : local_run;
   info = TetmeshRun{};
   ConvertedMesh best = mesh_with_tetgen(model, options, log, info);
+  refine_for_size(model, options, log, info, best);
   refine_surface(model, options, log, info, best);
+  require_volume_bound(model, options, info, best.mesh);
 
   VolumeMesh& mesh = best.mesh;
   info.slivers = sliver_census(mesh, options.min_dihedral_deg);

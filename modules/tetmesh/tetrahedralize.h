@@ -14,6 +14,9 @@
 
 namespace voroseal {
 
+/// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
+constexpr int kMaxSizeRounds = 16;
+
 struct TetmeshOptions {
   /// Maximum radius–edge ratio (circumradius / shortest edge) TetGen refines to, switch
   /// `q<ratio>`. 0 turns quality refinement off (no `q`). TetGen may not terminate below ~1.1.
@@ -60,6 +63,12 @@ struct TetmeshOptions {
   double refine_surface_below_deg = 6.0;
   /// At most this many bisection rounds (each one halves the edges it splits).
   int refine_surface_rounds = 4;
+  /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
+  /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
+  /// many rounds. Under Y TetGen adds no point inside the diametral ball of a surface triangle,
+  /// so next to coarse triangles only finer triangles let the bound hold. When it still does not
+  /// hold, tetrahedralize() throws rather than return tets over the bound.
+  int size_rounds = 8;
   /// TetGen runs with different facet orders when one crashes (a failed assertion), fails
   /// with an internal error or, under Y, splits surface triangles: TetGen 1.5 recovers edges in
   /// facet order and some orders avoid its weaknesses (see tetrahedralize()).
@@ -127,6 +136,8 @@ struct TetmeshRun {
   SliverCensus slivers;                   // tets left below min_dihedral_deg (none counted when 0)
   int surface_rounds = 0;                 // surface bisection rounds kept
   int bisected_edges = 0;                 // surface edges they split
+  int size_rounds = 0;                    // surface bisection rounds for max_volume
+  int size_bisected_edges = 0;            // surface edges they split
   /// The model with the bisected surfaces TetGen meshed last (the output triangles are its
   /// triangles); null when no round was kept.
   std::shared_ptr<const StructuralModel> refined_model;
@@ -174,13 +185,16 @@ struct TetmeshRun {
 /// recover an edge without splitting it (reported in TetmeshRun::split_facets and a warning;
 /// seen on raw inputs with needle triangles only).
 ///
+/// Volume bound (options.max_volume): every tet is within it, or this throws. Under Y the
+/// surface edges under tets over the bound are bisected first (options.size_rounds, see there);
+/// run->refined_model is then the model TetGen meshed.
 /// What TetGen prints is captured (never reaches stdout) and passed to `log.debug`; at the
 /// Debug level `Q` is left out so that TetGen's full log is captured.
 /// \throws ParameterError on options out of range, ModelError when the model has no regions
 ///         or a region has no interior point, MesherError when TetGen fails (the message names
 ///         the error, the surface parts involved — by TetGen's report and, for intersections,
-///         a follow-up `-d` detection run — and ends with TetGen's output), or when tets end up
-///         outside every region or a region gets no tet.
+///         a follow-up `-d` detection run — and ends with TetGen's output), when tets end up
+///         outside every region or a region gets no tet, or when tets exceed max_volume.
 VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
                           TetmeshRun* run = nullptr);
 

@@ -195,17 +195,54 @@ TEST(Tetrahedralize, MaxVolumeBoundsEveryTetWhenTheSurfaceMayBeSplit) {
   for (int s : mesh.triangle_surface) EXPECT_LT(s, static_cast<int>(model.parts.size()));
 }
 
-TEST(Tetrahedralize, MaxVolumeRefinesInsideAKeptSurface) {
-  // With Y TetGen inserts no point that encroaches upon the kept surface, so the bound holds
-  // away from coarse surface triangles only: more tets than without it, the surface intact.
-  const StructuralModel model = build_model(test::lattice_box(8, true));
+double largest_tet(const VolumeMesh& mesh) {
+  double largest = 0;
+  for (const Tetrahedron& t : mesh.tets)
+    largest = std::max(largest, tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                           mesh.vertices[t[2]], mesh.vertices[t[3]]));
+  return largest;
+}
+
+TEST(Tetrahedralize, MaxVolumeHoldsWithTheSurfaceKept) {
+  // With Y TetGen inserts no point that encroaches upon a kept surface triangle: the size rounds
+  // bisect the surface under the tets over the bound until every tet is within it.
+  const StructuralModel model = build_model(test::lattice_box(2, true));
   Logger log = quiet_logger();
-  const VolumeMesh unbounded = tetrahedralize(model, TetmeshOptions{}, log);
   TetmeshOptions options;
-  options.max_volume = 1e-4;
-  const VolumeMesh bounded = tetrahedralize(model, options, log);
-  expect_valid_mesh(model, bounded);
-  EXPECT_GT(bounded.tets.size(), 3 * unbounded.tets.size());
+  options.max_volume = 1e-3;
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  EXPECT_LE(largest_tet(mesh), options.max_volume * (1 + 1e-9));
+  EXPECT_GT(run.size_rounds, 0);
+  ASSERT_TRUE(run.refined_model);
+  EXPECT_GT(run.refined_model->num_triangles(), model.num_triangles());
+  expect_valid_mesh(*run.refined_model, mesh);
+}
+
+TEST(Tetrahedralize, MaxVolumeThatCannotHoldIsAnError) {
+  // No size round allowed: the coarse kept surface leaves tets over the bound, which is an
+  // error naming the bound, never a mesh.
+  const StructuralModel model = build_model(test::lattice_box(2, true));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.max_volume = 1e-3;
+  options.size_rounds = 0;
+  try {
+    tetrahedralize(model, options, log);
+    FAIL() << "tets over the bound were returned";
+  } catch (const MesherError& e) {
+    EXPECT_NE(std::string(e.what()).find("--max-volume 0.001 cannot hold"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Tetrahedralize, MaxVolumeHoldsOnABundledModel) {
+  const StructuralModel model = read_model(test::bundled_model("faulted_layers.ts"));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.max_volume = 1.5e6;  // the largest tet without a bound is about 4.2e6
+  const VolumeMesh mesh = tetrahedralize(model, options, log);
+  EXPECT_LE(largest_tet(mesh), options.max_volume * (1 + 1e-9));
 }
 
 /// A box holding two squares that cross each other along a vertical line.

@@ -1,0 +1,75 @@
+// `voroseal convert` on volume meshes: every format it writes tets to keeps the tets, their
+// region ids and the surface triangles; a format that holds surfaces only is refused.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "framework/model/model_builder.h"
+#include "io/model_io.h"
+#include "modules/tetmesh/tetrahedralize.h"
+#include "tests/cli/cli_run.h"
+#include "tests/support/test_models.h"
+
+namespace voroseal::test {
+namespace {
+
+std::map<int, long> tets_per_region(const VolumeMesh& mesh) {
+  std::map<int, long> count;
+  for (int r : mesh.tet_region) ++count[r];
+  return count;
+}
+
+std::map<int, long> triangles_per_surface(const VolumeMesh& mesh) {
+  std::map<int, long> count;
+  for (int s : mesh.triangle_surface) ++count[s];
+  return count;
+}
+
+class CliConvert : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    Logger log(LogLevel::Quiet);
+    mesh_ = tetrahedralize(build_model(lattice_box(3, true)), TetmeshOptions{}, log);
+    write_volume_mesh(mesh_, source_);
+  }
+  CliDir dir_{"cli_convert"};
+  std::string source_ = dir_ / "vol.mesh";
+  VolumeMesh mesh_;
+};
+
+TEST_F(CliConvert, KeepsTetsRegionsAndSurfacesThroughEveryVolumeFormat) {
+  ASSERT_GT(mesh_.tets.size(), 0u);
+  ASSERT_GT(tets_per_region(mesh_).size(), 1u);
+  // Each hop reads the previous file: .mesh -> .vtu -> .msh -> .node -> .mesh.
+  const std::vector<std::string> chain = {source_, dir_ / "a.vtu", dir_ / "b.msh", dir_ / "c.node",
+                                          dir_ / "d.mesh"};
+  for (size_t i = 1; i < chain.size(); ++i) {
+    const CliResult r = run_voroseal({"convert", chain[i - 1], chain[i]});
+    ASSERT_EQ(r.exit_code, 0) << chain[i - 1] << " -> " << chain[i] << ": " << r.err;
+    const VolumeMesh back = read_volume_mesh(chain[i]);
+    EXPECT_EQ(back.tets.size(), mesh_.tets.size()) << chain[i];
+    EXPECT_EQ(back.vertices.size(), mesh_.vertices.size()) << chain[i];
+    EXPECT_EQ(tets_per_region(back), tets_per_region(mesh_)) << chain[i];
+    EXPECT_EQ(triangles_per_surface(back), triangles_per_surface(mesh_)) << chain[i];
+  }
+}
+
+TEST_F(CliConvert, RefusesAFormatThatCannotHoldTets) {
+  for (const char* target : {"x.ts", "x.obj", "x.ml"}) {
+    const CliResult r = run_voroseal({"convert", source_, dir_ / target});
+    EXPECT_EQ(r.exit_code, 2) << target;
+    EXPECT_NE(r.err.find("the tets would be lost"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / target)) << target;
+  }
+}
+
+TEST_F(CliConvert, RefusesToWriteSurfacesAsTetGenFiles) {
+  const std::string model = dir_ / "box.ts";
+  write_box_model(model);
+  const CliResult r = run_voroseal({"convert", model, dir_ / "x.node"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("holds surfaces only"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace voroseal::test
