@@ -364,7 +364,9 @@ class RemeshModule final : public Module {
       std::vector<Vec3> places = places_to_refine(judgement, result.topology, input.frame);
       BallRefinementOptions repair = remesh_options.refinement;
       repair.min_size = result.min_feature;
-      const int rounds = static_cast<int>(parameters.get_int("repair-rounds"));
+      // --no-cleanup asks for the raw dual: judged, not refined.
+      const int rounds =
+          remesh_options.clean_up ? static_cast<int>(parameters.get_int("repair-rounds")) : 0;
       for (int round = 0; round < rounds && !places.empty(); ++round) {
         const auto t0 = std::chrono::steady_clock::now();
         Progress quiet(false);
