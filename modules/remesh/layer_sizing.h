@@ -1,8 +1,8 @@
 // Sizing for thin layers: where two surfaces face each other closer than the cells are wide (a
 // layer, or a gap between two faults, thinner than its triangles), a tet mesh that keeps the
 // surface triangles can only fill it with flat tets: a prism of height t under triangles of
-// side L splits into tets of about atan(t / 0.87 L) (modelA6, region 3: 14-45 m under 470 m
-// triangles, 1.5 deg). Cells about `ratio` times the thickness there open those tets.
+// side L splits into tets of about atan(t / 0.87 L). Cells about `ratio` times the thickness
+// there open those tets.
 //
 // The size is h where nothing is thin, ratio × t on the sides of a layer of thickness t (t from
 // a ray along the vertex normal to the first surface of another part facing it), never under
@@ -10,9 +10,8 @@
 // the layer. Next to a thin wedge at a contact (a pinch-out, where a layer ends between two
 // surfaces meeting at a few degrees) the size stays h and falls off at the same rate: finer
 // cells there would only resolve the input's wiggles at the tip into thinner wedges, and a
-// wedge's angle bounds the dihedral angles of the tets in it whatever the size (measured on
-// modelA6 at 8000 seeds: 3.5 deg with it, 1.9 deg without, 0.0 deg without and cells down to
-// h / 8, all at pinch-outs).
+// wedge's angle bounds the dihedral angles of the tets in it whatever the size
+// (docs/benchmarks.md, "Figures behind the code").
 //
 // A contact between two corners shorter than h (a layer's stretch of a box edge) gets cells
 // corner_ratio times its length along it, graded the same way, unless it is shorter than

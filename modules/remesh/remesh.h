@@ -24,9 +24,8 @@ namespace voroseal {
 
 /// Defaults of the command line, relative to the mean edge length h of the remesh: features
 /// closer than 0.15 h are merged (thinner strips only give slivers; a merge moves the surfaces
-/// by up to d_min, which bounds the Hausdorff distance it causes: 0.2 h gave 0.56 % of the
-/// diagonal on CloudSpin_fixed at 5000 seeds, 0.15 h 0.46 %), and the remesh is refined where
-/// it strays farther than 0.1 h from the input.
+/// by up to d_min, which bounds the Hausdorff distance it causes; docs/benchmarks.md), and the
+/// remesh is refined where it strays farther than 0.1 h from the input.
 constexpr double kDefaultMinFeatureFactor = 0.15;
 constexpr double kDefaultFidelityFactor = 0.1;
 

@@ -643,10 +643,9 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   info.input_facets = in.numberoffacets;
   log.debug("tetmesh: PLC of " + std::to_string(plc_points) + " points, " + std::to_string(in.numberoffacets) +
             " facets, " + std::to_string(in.numberofregions) + " region points (" + number(info.plc_seconds) + " s)");
-  // Needle-filled surfaces (raw inputs: 1.2–18 % of the RING models' triangles are sharper
-  // than 1°, at most 0.02 % of remeshed ones) keep a minimum dihedral angle of 0° whatever is
-  // done inside the regions: TetGen's own optimisation thresholds and no sliver passes, which
-  // would cost 3–4 times the TetGen time (raw modelA4: 16 s → 56 s) for nothing.
+  // Needle-filled surfaces (raw inputs, not remeshed ones) keep a minimum dihedral angle of 0°
+  // whatever is done inside the regions: TetGen's own optimisation thresholds and no sliver
+  // passes, which would multiply the TetGen time for nothing (docs/benchmarks.md).
   const auto [smallest_angle, needles] = surface_needles(model);
   info.surface_min_angle_deg = smallest_angle;
   info.surface_needles = needles;
