@@ -134,15 +134,15 @@ void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>&
 void merge_close_features(Editor& e, const SurfaceProjector& projector, double min_feature,
                           CleanupCounts& report);
 
-// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it, and
-// any tet mesh keeping the surfaces fills the gap with tets about as flat as the gap is thin
-// against the triangles around it (docs/benchmarks.md, "Figures behind the code"). Closer
-// than d_min, the tip joins the part (paper Fig. 11c-d, a fault tip joins the fault next to
-// it): a free border vertex v next to a vertex a of the part, whose gap d to the part is less
-// than tan(max_wedge) times the larger of |av| and the part's triangle under v, moves to the closest point of the
-// part's triangles around a or next to them and is inserted there (pinned), and (a, v) becomes
-// a contact edge, made in the part by a flip when v landed next to a's triangles. A join may
-// bring the next border vertex in. It is refused when it leaves a needle, a wedge thinner than
+// A free border (a fault tip) that leaves a part at a thin wedge runs a few metres from it, and any
+// tet mesh keeping the surfaces fills the gap with tets about as flat as the gap is thin against
+// the triangles around it (docs/benchmarks.md, "Figures behind the code"). Closer than d_min, the
+// tip joins the part (paper Fig. 11c-d, a fault tip joins the fault next to it): a free border
+// vertex v next to a vertex a of the part, whose gap d to the part is less than tan(max_wedge)
+// times the larger of |av| and the part's triangle under v, moves to the closest point of the
+// part's triangles around a or next to them and is inserted there (pinned), and (a, v) becomes a
+// contact edge, made in the part by a flip when v landed next to a's triangles. A join may bring
+// the next border vertex in. It is refused when it leaves a needle, a wedge thinner than
 // max_wedge at the new contact edge, or a free edge of v leaving the part at less than twice
 // max_wedge beyond d_min (the gap would only move on), and when v would keep no free edge
 // toward a vertex off the part: a free border never closes entirely (that might cut a region
@@ -206,14 +206,13 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
 // The angle passes raise the smallest angle around one vertex at a time, and the quality passes
 // keep every triangle as sharp as it is: what they leave are triangles of 20-30 degrees whose
 // vertices each hold another sharp triangle (most of them within 5 degrees of 30). Here a move
-// counts the triangles sharper
-// than 30 degrees it leaves around it: it is made when there are fewer, none gets sharper than 15
-// degrees (or than the sharpest one there, when that already is) nor by more than 5 degrees
-// sharper than the sharpest one there was, and the sum of Q there loses at most 0.3 per triangle
-// fixed. First each vertex of a sharp triangle alone (along its contact, or around it in its
-// part), then two of its vertices together (the apex and a base vertex of a triangle in a strip
-// between two contacts); edge flips after each pass, up to `passes` passes. Returns the moves
-// made.
+// counts the triangles sharper than 30 degrees it leaves around it: it is made when there are
+// fewer, none gets sharper than 15 degrees (or than the sharpest one there, when that already is)
+// nor by more than 5 degrees sharper than the sharpest one there was, and the sum of Q there loses
+// at most 0.3 per triangle fixed. First each vertex of a sharp triangle alone (along its contact,
+// or around it in its part), then two of its vertices together (the apex and a base vertex of a
+// triangle in a strip between two contacts); edge flips after each pass, up to `passes` passes.
+// Returns the moves made.
 int reduce_sharp_triangles(Editor& e, const SurfaceProjector& projector, int passes, double flatness_deg,
                            int& flips);
 
