@@ -4,8 +4,9 @@
   bench/sharp_triangles.py OUT.obj [--angle 30]
 
 Reads an OBJ (one group per surface part, welded vertices as voroseal writes them). A contact
-edge is an edge not shared by exactly two triangles; a corner is a vertex with other than two
-contact edges. Each triangle is classed by its vertices (at a corner; else how many lie on
+edge is an edge not shared by exactly two triangles of one part (the model's rule: where the
+set of parts changes, box edges included); a corner is a vertex with other than two contact
+edges. Each triangle is classed by its vertices (at a corner; else how many lie on
 contacts), and the table gives per class the triangles, the share under --angle and the mean
 quality Q = 2 sqrt(3) area / (half-perimeter x longest edge). Then the contact edge lengths
 against the mean edge length, and the sharp triangles with one contact edge facing a vertex
@@ -19,16 +20,21 @@ import statistics
 
 
 def read_obj(path):
-    vertices, triangles = [], []
+    """Vertices, triangles and the group (part) of each triangle."""
+    vertices, triangles, groups = [], [], []
+    group = 0
     with open(path) as f:
         for line in f:
             if line.startswith("v "):
                 vertices.append(tuple(float(x) for x in line.split()[1:4]))
+            elif line.startswith(("g ", "o ")):
+                group += 1
             elif line.startswith("f "):
                 ids = [int(x.split("/")[0]) - 1 for x in line.split()[1:]]
                 for k in range(1, len(ids) - 1):
                     triangles.append((ids[0], ids[k], ids[k + 1]))
-    return vertices, triangles
+                    groups.append(group)
+    return vertices, triangles, groups
 
 
 def sub(a, b):
@@ -63,12 +69,17 @@ def main():
     ap.add_argument("obj")
     ap.add_argument("--angle", type=float, default=30.0)
     a = ap.parse_args()
-    V, F = read_obj(a.obj)
-    uses = collections.Counter()
-    for t in F:
+    V, F, G = read_obj(a.obj)
+    parts_of = collections.defaultdict(list)  # edge -> the part of each triangle on it
+    for t, g in zip(F, G):
         for i in range(3):
-            uses[tuple(sorted((t[i], t[(i + 1) % 3])))] += 1
-    contact_edges = [e for e, c in uses.items() if c != 2]
+            parts_of[tuple(sorted((t[i], t[(i + 1) % 3])))].append(g)
+
+    def is_contact(edge):
+        parts = parts_of[edge]
+        return len(parts) != 2 or parts[0] != parts[1]
+
+    contact_edges = [e for e in parts_of if is_contact(e)]
     degree = collections.Counter()
     for u, v in contact_edges:
         degree[u] += 1
@@ -92,22 +103,28 @@ def main():
             line_of[x] = line
             stack.extend(adjacent[x])
         line += 1
-    mean_edge = statistics.mean(norm(sub(V[u], V[v])) for u, v in uses)
+    mean_edge = statistics.mean(norm(sub(V[u], V[v])) for u, v in parts_of)
 
     rows = collections.defaultdict(lambda: [0, 0, 0.0])
     facing = []
+    forced = 0  # sharp at a corner, between two contact edges: the input's angle there
     for t in F:
         p = [V[i] for i in t]
         key = "corner" if any(v in corner for v in t) else \
             "%d on contacts" % sum(v in on_contact for v in t)
-        sharp = min(angles(p)) < a.angle
+        angle = angles(p)
+        sharp = min(angle) < a.angle
         row = rows[key]
         row[0] += 1
         row[1] += sharp
         row[2] += quality(p)
+        if sharp and key == "corner":
+            i = angle.index(min(angle))
+            forced += t[i] in corner and all(
+                is_contact(tuple(sorted((t[i], t[j])))) for j in ((i + 1) % 3, (i + 2) % 3))
         if not sharp or key != "3 on contacts":
             continue
-        edges = [i for i in range(3) if uses[tuple(sorted((t[i], t[(i + 1) % 3])))] != 2]
+        edges = [i for i in range(3) if is_contact(tuple(sorted((t[i], t[(i + 1) % 3]))))]
         if len(edges) != 1:
             continue
         i = edges[0]
@@ -124,6 +141,8 @@ def main():
     for key in sorted(rows):
         n, s, q = rows[key]
         print(f"| {key} | {n} | {100.0 * s / n:.2f} | {q / n:.3f} |")
+    print(f"sharp corner triangles whose smallest angle is between two contact edges at the "
+          f"corner: {forced} of {rows['corner'][1]}")
     lengths = sorted(norm(sub(V[u], V[v])) / mean_edge for u, v in contact_edges)
     if lengths:
         short = sum(1 for x in lengths if x < 0.5)
