@@ -165,6 +165,27 @@ TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
   EXPECT_THROW(run({{"zip-pinch-outs", true}, {"zip-wedge", 0.0}}), ParameterError);
 }
 
+TEST(RemeshModule, RefinesAnInvalidRemeshButJudgesTheRawDualAsItIs) {
+  // An input no remesh can make valid (a fault crossing the horizon without a contact): with
+  // the clean-up, each repair round refines and judges again; --no-cleanup asks for the raw
+  // dual as it is, judged and not refined.
+  auto rounds = [](bool cleanup) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    SurfaceSoup soup = test::lattice_box(6, true);
+    test::append(soup, test::floating_fault(6, 0.5, 0.3, 0.7));
+    harness.context.model = std::make_shared<StructuralModel>(build_model(soup));
+    harness.module.run(harness.context,
+                       Parameters(harness.module.parameters(),
+                                  {{"seeds", 400}, {"iterations", 20}, {"repair-rounds", 2},
+                                   {"refine-iterations", 10}, {"cleanup", cleanup}}));
+    const nlohmann::json& r = harness.context.report.at("remesh");
+    EXPECT_FALSE(r.at("valid").get<bool>());
+    return r.at("repair_refinement").at("rounds").size();
+  };
+  EXPECT_EQ(rounds(true), 2u);
+  EXPECT_EQ(rounds(false), 0u);
+}
+
 TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsNotWrittenAndNamesItsDefects) {
   // A fault crossing the horizon without a contact (the input itself is not conformal): the
   // remeshed surfaces cross where the input's do, which no clean-up can undo. The verdict is
