@@ -283,9 +283,11 @@ class Editor {
   // Violations on the edges of `triangles` and between `triangles` and any other triangle.
   Violations violations(const std::vector<int>& triangles);
 
-  // An edit may keep its changes when it makes nothing worse (`strict`: when it repairs).
+  // An edit may keep its changes when it makes nothing worse (`strict`: when it repairs). As a
+  // phase is judged (cleanup_phase.cpp), no trade of a fold for what makes the model invalid.
   static bool acceptable(const Violations& before, const Violations& after, bool strict) {
     if (after.holes > before.holes || after.leaks > before.leaks) return false;
+    if (after.total() - after.folds > before.total() - before.folds) return false;
     return strict ? after.total() < before.total() : after.total() <= before.total();
   }
 

@@ -122,11 +122,13 @@ namespace {
 // Collapse of u into v allowed by the features: a vertex only slides onto something at least as
 // constrained, along the feature it samples; or, closer than d_min (`merge_below`), a contact
 // vertex joins another contact or a corner, which merges the two features there. A repair
-// (`repairing`) may also move a pinned contact point.
+// (`repairing`) may also move a pinned contact point; a bend goes where its contact keeps to the
+// input without it (bend_may_go()).
 bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, bool repairing = false) {
   const VertexFeature& fu = e.mesh().features[u];
   const VertexFeature& fv = e.mesh().features[v];
-  if (fu.pinned && !repairing) return false;
+  if (fu.pinned && !repairing && !(e.is_bend(u) && e.is_line_edge(u, v) && bend_may_go(e, u, v)))
+    return false;
   switch (fu.kind) {
     case VertexFeature::Corner:
       // Corners closer than the resolution merge only to repair (paper Fig. 11b).

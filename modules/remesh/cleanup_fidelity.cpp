@@ -166,6 +166,29 @@ bool FidelityGuard::allows(const Vec3& x) const {
   return true;
 }
 
+bool bend_may_go(Editor& e, int u, int v) {
+  const ContactArcs* arcs = e.arcs();
+  const VertexFeature& f = e.mesh().features[u];
+  if (arcs == nullptr || e.tolerance() <= 0.0 || f.kind != VertexFeature::Contact) return false;
+  std::vector<int> nb;
+  e.neighbours(u, nb);
+  int w = -1, sides = 0;
+  for (int x : nb)
+    if (along_contact(e, u, x)) {
+      ++sides;
+      if (x != v) w = x;
+    }
+  if (sides != 2 || w < 0) return false;
+  const int c = f.id;
+  const double at_u = arcs->position(c, e.p(u)), at_v = arcs->position(c, e.p(v));
+  const double at_w = arcs->position(c, e.p(w));
+  double before_v = 0.0, before_w = 0.0, after = 0.0;
+  arcs->farthest_between(c, at_u, at_v, e.p(u), e.p(v), &before_v);
+  arcs->farthest_between(c, at_u, at_w, e.p(u), e.p(w), &before_w);
+  arcs->farthest_between(c, at_v, at_w, e.p(v), e.p(w), &after);
+  return after <= std::max({e.tolerance(), before_v, before_w});
+}
+
 int refine_toward_input(Editor& e, double tolerance, int max_splits) {
   if (tolerance <= 0.0 || max_splits <= 0) return 0;
   const StructuralModel& in = e.input();

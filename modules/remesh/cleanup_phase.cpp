@@ -18,6 +18,27 @@ bool accepts(PhaseCheck check, const Violations& before, const Violations& after
   return check == PhaseCheck::InvalidDefects || after.folds <= before.folds;
 }
 
+// A phase rejected whole runs again round by round, each round kept while it leaves no more
+// defects, up to the first that does: a phase of many rounds then loses only what follows the
+// round that made a defect, not all the others did (ten smoothing passes for one leak).
+void keep_rounds(Editor& e, const PhaseSpec& phase, const CleanupContext& context,
+                 Violations& defects, CleanupCounts& kept, PhaseRecord& record) {
+  for (int round = 0; round < record.rounds; ++round) {
+    e.begin();
+    const PhaseCounts counts = phase.round(e, context);
+    const Violations after = e.changed_in_transaction() ? e.census().count : defects;
+    if (!accepts(phase.check, defects, after)) {
+      e.rollback();
+      break;
+    }
+    e.commit();
+    kept.add(counts.counts);
+    defects = after;
+    record.rounds_kept = round + 1;
+    if (counts.progress == 0) break;
+  }
+}
+
 }  // namespace
 
 PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& context,
@@ -42,11 +63,13 @@ PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& c
   record.invalid_after = invalid(after);
   record.kept = accepts(phase.check, defects, after);
   if (record.kept) {
+    record.rounds_kept = record.rounds;
     e.commit();
     kept.add(counts);
     defects = after;
   } else {
     e.rollback();
+    if (record.rounds > 1) keep_rounds(e, phase, context, defects, kept, record);
   }
   record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return record;

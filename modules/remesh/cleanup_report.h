@@ -42,6 +42,7 @@ struct PhaseRecord {
   int rounds = 0;          // rounds run (up to the schedule's bound)
   int edits = 0;           // CleanupCounts::edits() of those rounds
   bool kept = true;        // false: the phase left more defects than it found and was rolled back
+  int rounds_kept = 0;     // all its rounds when kept; when not, those kept one by one after
   int defects_before = 0;  // the census (Violations::total(), folds included) before the phase
   int defects_after = 0;   // and after it, before any rollback
   int invalid_before = 0;  // the same but folds (they only warn)

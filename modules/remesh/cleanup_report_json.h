@@ -15,6 +15,7 @@ inline nlohmann::json phases_json(const std::vector<PhaseRecord>& phases) {
                    {"rounds", p.rounds},
                    {"edits", p.edits},
                    {"kept", p.kept},
+                   {"rounds_kept", p.rounds_kept},
                    {"defects_before", p.defects_before},
                    {"defects_after", p.defects_after},
                    {"invalid_before", p.invalid_before},

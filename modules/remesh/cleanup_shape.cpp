@@ -67,6 +67,15 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
       if (moved[w]) return true;
     return false;
   };
+  // What makes each edge in a violation invalid now (folds aside, which only warn), against what
+  // did before: an edge may have had fewer, or a fold where it has a leak now.
+  auto invalid_on = [&](int a, int b) {
+    const Violations v = e.edge_check(a, b);
+    return v.total() - v.folds;
+  };
+  std::vector<int> edge_now;
+  edge_now.reserve(now.edges.size());
+  for (const auto& [a, b] : now.edges) edge_now.push_back(invalid_on(a, b));
   // Evaluate the old state by swapping the positions in (a cheap swap of two vectors).
   e.swap_positions(before);
   std::vector<int> guilty;
@@ -75,11 +84,12 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
         (is_degenerate(e.mesh().vertices, e.mesh().triangles[a]) || is_degenerate(e.mesh().vertices, e.mesh().triangles[b]) ||
          !triangles_intersect(e.mesh().vertices, e.mesh().triangles[a], e.mesh().triangles[b])))
       guilty.insert(guilty.end(), {a, b});
-  for (const auto& [a, b] : now.edges) {
+  for (size_t k = 0; k < now.edges.size(); ++k) {
+    const auto [a, b] = now.edges[k];
     e.edge_triangles(a, b, tris);
     bool any = false;
     for (int t : tris) any = any || touched(t);
-    if (any && e.edge_check(a, b).total() == 0) guilty.insert(guilty.end(), tris.begin(), tris.end());
+    if (any && invalid_on(a, b) < edge_now[k]) guilty.insert(guilty.end(), tris.begin(), tris.end());
   }
   for (int t : now.degenerate)
     if (touched(t) && !is_degenerate(e.mesh().vertices, e.mesh().triangles[t])) guilty.push_back(t);

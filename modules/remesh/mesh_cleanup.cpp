@@ -17,6 +17,12 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
   const ContactArcs arcs(input);
   e.set_fidelity(options.fidelity_tolerance, &arcs);
   e.set_thresholds(options.thresholds);
+  // The sharp points of the mesh building are bends of their contacts like those the fidelity
+  // refinement adds: with a tolerance, they slide and go where the contact keeps to the input.
+  if (options.fidelity_tolerance > 0.0)
+    for (size_t v = 0; v < surface.vertices.size(); ++v)
+      if (surface.features[v].kind == VertexFeature::Contact && surface.features[v].pinned)
+        e.mark_bend(static_cast<int>(v));
   const CleanupContext context{projector, options, options.thresholds, report};
   Violations defects = e.census().count;
   for (const PhaseSpec& phase : cleanup_schedule(options.thresholds)) {
