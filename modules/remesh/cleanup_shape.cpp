@@ -89,7 +89,8 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
     e.edge_triangles(a, b, tris);
     bool any = false;
     for (int t : tris) any = any || touched(t);
-    if (any && invalid_on(a, b) < edge_now[k]) guilty.insert(guilty.end(), tris.begin(), tris.end());
+    if (any && invalid_on(a, b) < edge_now[k])
+      guilty.insert(guilty.end(), tris.begin(), tris.end());
   }
   for (int t : now.degenerate)
     if (touched(t) && !is_degenerate(e.mesh().vertices, e.mesh().triangles[t])) guilty.push_back(t);

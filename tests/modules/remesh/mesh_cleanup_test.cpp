@@ -251,7 +251,8 @@ TEST(MeshCleanup, ABendGoesWhereItsContactKeepsToTheInputWithoutIt) {
     for (const Triangle& f : s.triangles)
       for (int v : f)
         if (v != bend && s.features[v].kind == VertexFeature::Contact &&
-            (held < 0 || (s.vertices[v] - s.vertices[bend]).norm() < (s.vertices[held] - s.vertices[bend]).norm()))
+            (held < 0 || (s.vertices[v] - s.vertices[bend]).norm() <
+                             (s.vertices[held] - s.vertices[bend]).norm()))
           held = v;
     cleanup::Editor e(s, input);
     e.set_projector(&projector);
