@@ -40,6 +40,8 @@ struct Violations {
                        // triangles of a part's edge (a pleat): a volume of no thickness there
                        // (and flat tetrahedra in any volume mesh)
   int total() const { return holes + leaks + crossings + degenerate + pinches + folds; }
+  // What makes the model invalid: all but the folds, which only warn.
+  int invalid() const { return total() - folds; }
 };
 
 // The census's bars (see CleanupThresholds).
@@ -287,7 +289,7 @@ class Editor {
   // phase is judged (cleanup_phase.cpp), no trade of a fold for what makes the model invalid.
   static bool acceptable(const Violations& before, const Violations& after, bool strict) {
     if (after.holes > before.holes || after.leaks > before.leaks) return false;
-    if (after.total() - after.folds > before.total() - before.folds) return false;
+    if (after.invalid() > before.invalid()) return false;
     return strict ? after.total() < before.total() : after.total() <= before.total();
   }
 

@@ -127,7 +127,7 @@ namespace {
 bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, bool repairing = false) {
   const VertexFeature& fu = e.mesh().features[u];
   const VertexFeature& fv = e.mesh().features[v];
-  if (fu.pinned && !repairing && !(e.is_bend(u) && e.is_line_edge(u, v) && bend_may_go(e, u, v)))
+  if (fu.pinned && !repairing && !(e.is_bend(u) && bend_may_go(e, u, v)))
     return false;
   switch (fu.kind) {
     case VertexFeature::Corner:

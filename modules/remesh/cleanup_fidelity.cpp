@@ -173,12 +173,16 @@ bool bend_may_go(Editor& e, int u, int v) {
   std::vector<int> nb;
   e.neighbours(u, nb);
   int w = -1, sides = 0;
+  bool to_v = false;
   for (int x : nb)
     if (along_contact(e, u, x)) {
       ++sides;
-      if (x != v) w = x;
+      if (x == v)
+        to_v = true;
+      else
+        w = x;
     }
-  if (sides != 2 || w < 0) return false;
+  if (sides != 2 || !to_v || w < 0) return false;
   const int c = f.id;
   const double at_u = arcs->position(c, e.p(u)), at_v = arcs->position(c, e.p(v));
   const double at_w = arcs->position(c, e.p(w));

@@ -6,15 +6,12 @@ namespace voroseal::cleanup {
 
 namespace {
 
-// What makes the model invalid (folds only warn).
-int invalid(const Violations& v) { return v.total() - v.folds; }
-
 // Counts, not kinds: a phase's edits are each checked where they are, and a phase may trade a
 // defect for another (smoothing that mends degenerate triangles and opens a leak the repair
 // closes). Those that make the model invalid come first: a phase may trade folds for them,
 // never the other way round.
 bool accepts(PhaseCheck check, const Violations& before, const Violations& after) {
-  if (invalid(after) != invalid(before)) return invalid(after) < invalid(before);
+  if (after.invalid() != before.invalid()) return after.invalid() < before.invalid();
   return check == PhaseCheck::InvalidDefects || after.folds <= before.folds;
 }
 
@@ -47,7 +44,7 @@ PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& c
   PhaseRecord record;
   record.name = phase.name;
   record.defects_before = defects.total();
-  record.invalid_before = invalid(defects);
+  record.invalid_before = defects.invalid();
   CleanupCounts counts;
   e.begin();
   while (record.rounds < phase.rounds) {
@@ -60,7 +57,7 @@ PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& c
   // Nothing kept in the journal: nothing changed, the census stands.
   const Violations after = e.changed_in_transaction() ? e.census().count : defects;
   record.defects_after = after.total();
-  record.invalid_after = invalid(after);
+  record.invalid_after = after.invalid();
   record.kept = accepts(phase.check, defects, after);
   if (record.kept) {
     record.rounds_kept = record.rounds;

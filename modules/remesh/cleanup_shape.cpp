@@ -67,15 +67,11 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
       if (moved[w]) return true;
     return false;
   };
-  // What makes each edge in a violation invalid now (folds aside, which only warn), against what
-  // did before: an edge may have had fewer, or a fold where it has a leak now.
-  auto invalid_on = [&](int a, int b) {
-    const Violations v = e.edge_check(a, b);
-    return v.total() - v.folds;
-  };
+  // What makes each edge in a violation invalid now, against what did before: an edge may have
+  // had fewer, or a fold (which only warns) where it has a leak now.
   std::vector<int> edge_now;
   edge_now.reserve(now.edges.size());
-  for (const auto& [a, b] : now.edges) edge_now.push_back(invalid_on(a, b));
+  for (const auto& [a, b] : now.edges) edge_now.push_back(e.edge_check(a, b).invalid());
   // Evaluate the old state by swapping the positions in (a cheap swap of two vectors).
   e.swap_positions(before);
   std::vector<int> guilty;
@@ -89,7 +85,7 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
     e.edge_triangles(a, b, tris);
     bool any = false;
     for (int t : tris) any = any || touched(t);
-    if (any && invalid_on(a, b) < edge_now[k])
+    if (any && e.edge_check(a, b).invalid() < edge_now[k])
       guilty.insert(guilty.end(), tris.begin(), tris.end());
   }
   for (int t : now.degenerate)

@@ -282,11 +282,6 @@ int refine_toward_input(Editor& e, double tolerance, int max_splits);
 // refinement do not undo it (a chord sliding over a bend). The vertices the refinement put at
 // bends (pinned) move under this rule too. Any position is allowed for other vertices and
 // without a tolerance.
-// Whether bend u may go by its collapse into v, its neighbour along the contact: the contact
-// edge from v to u's other neighbour then strays from the input contact by no more than the
-// fidelity tolerance (or than u's two edges did). Without a tolerance a bend stays.
-bool bend_may_go(Editor& e, int u, int v);
-
 class FidelityGuard {
  public:
   /// v's neighbours (Editor::neighbours()).
@@ -305,6 +300,11 @@ class FidelityGuard {
   Side sides_[2];
   int count_ = 0;
 };
+
+// Whether bend u may go by its collapse into v, its neighbour along the contact: the contact
+// edge from v to u's other neighbour then strays from the input contact by no more than the
+// fidelity tolerance (or than u's two edges did). Without a tolerance a bend stays.
+bool bend_may_go(Editor& e, int u, int v);
 
 // ---- repair (cleanup_repair.cpp) ----
 

@@ -500,8 +500,7 @@ PinchZips zip_pinch_outs(Editor& e, double max_thickness, double max_wedge_deg) 
     for (int v : {a, b, front}) push_edges(v);
   }
   const Editor::Census after_zip = e.census();
-  auto but_folds = [](const Editor::Census& c) { return c.count.total() - c.count.folds; };
-  if (report.edits() > 0 && but_folds(after_zip) > but_folds(before_zip)) {
+  if (report.edits() > 0 && after_zip.count.invalid() > before_zip.count.invalid()) {
     e.rollback();  // the features too: they are journaled
     return PinchZips{};
   }
