@@ -67,11 +67,16 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
       if (moved[w]) return true;
     return false;
   };
-  // What makes each edge in a violation invalid now, against what did before: an edge may have
-  // had fewer, or a fold (which only warns) where it has a leak now.
-  std::vector<int> edge_now;
+  // Each edge in a violation now against before, as a phase is judged: what makes it invalid
+  // first (it may have had a fold, which only warns, where it has a leak now), then its folds
+  // (a batch that leaves a fold more would have its whole phase rolled back).
+  auto worse = [](const Violations& now, const Violations& before) {
+    if (now.invalid() != before.invalid()) return now.invalid() > before.invalid();
+    return now.folds > before.folds;
+  };
+  std::vector<Violations> edge_now;
   edge_now.reserve(now.edges.size());
-  for (const auto& [a, b] : now.edges) edge_now.push_back(e.edge_check(a, b).invalid());
+  for (const auto& [a, b] : now.edges) edge_now.push_back(e.edge_check(a, b));
   // Evaluate the old state by swapping the positions in (a cheap swap of two vectors).
   e.swap_positions(before);
   std::vector<int> guilty;
@@ -85,7 +90,7 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
     e.edge_triangles(a, b, tris);
     bool any = false;
     for (int t : tris) any = any || touched(t);
-    if (any && e.edge_check(a, b).invalid() < edge_now[k])
+    if (any && worse(edge_now[k], e.edge_check(a, b)))
       guilty.insert(guilty.end(), tris.begin(), tris.end());
   }
   for (int t : now.degenerate)
