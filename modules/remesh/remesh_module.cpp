@@ -462,15 +462,25 @@ class RemeshModule final : public Module {
     report["cleanup"]["phases"] = phases_json(result.cleanup.phases);
     report["min_feature"] = result.min_feature;
     report["sharp_points"] = result.build.sharp_points;
-    const int invalid = result.cleanup.holes_left + result.cleanup.leaks_left + result.cleanup.degenerate_left +
-                        result.cleanup.pinches_left + result.cleanup.folds_left;
-    if (invalid > 0)
-      context.log.warning("remesh: the clean-up left " + std::to_string(result.cleanup.holes_left) + " holes, " +
-                          std::to_string(result.cleanup.leaks_left) + " leaks, " +
-                          std::to_string(result.cleanup.degenerate_left) + " degenerate triangles, " +
-                          std::to_string(result.cleanup.pinches_left) + " pinched vertices and " +
-                          std::to_string(result.cleanup.folds_left) +
-                          " folds (run `voroseal check` on the output)");
+    // The clean-up's own census, taken before the pockets are opened and the model is read
+    // back: what it counts as invalid is a warning only when the verdict on the model as
+    // written (below) agrees that something is wrong. Folds only warn, and do so as they are.
+    const CleanupReport& left = result.cleanup;
+    if (left.invalid_left() > 0) {
+      const std::string census = "remesh: the clean-up left " +
+                                 std::to_string(left.intersections_left) + " crossing pairs, " +
+                                 std::to_string(left.holes_left) + " holes, " + std::to_string(left.leaks_left) + " leaks, " +
+                                 std::to_string(left.degenerate_left) + " degenerate triangles and " +
+                                 std::to_string(left.pinches_left) + " pinched vertices";
+      if (judgement.verdict.valid())
+        context.log.debug(census + "; the model as written is valid");
+      else
+        context.log.warning(census);
+    }
+    if (left.folds_left > 0)
+      context.log.warning("remesh: " + std::to_string(left.folds_left) +
+                          " folds left (two triangles of a surface at less than 5 deg: flat tets "
+                          "in a volume mesh there)");
     report["topology"] = topology_json(result.topology, *context.model);
     print_topology(context.log, result.topology, *context.model);
 
