@@ -166,7 +166,7 @@ bool FidelityGuard::allows(const Vec3& x) const {
   return true;
 }
 
-bool bend_may_go(Editor& e, int u, int v) {
+bool bend_may_go(Editor& e, int u, int v, double slack) {
   const ContactArcs* arcs = e.arcs();
   const VertexFeature& f = e.mesh().features[u];
   if (arcs == nullptr || e.tolerance() <= 0.0 || f.kind != VertexFeature::Contact) return false;
@@ -190,7 +190,7 @@ bool bend_may_go(Editor& e, int u, int v) {
   arcs->farthest_between(c, at_u, at_v, e.p(u), e.p(v), &before_v);
   arcs->farthest_between(c, at_u, at_w, e.p(u), e.p(w), &before_w);
   arcs->farthest_between(c, at_v, at_w, e.p(v), e.p(w), &after);
-  return after <= std::max({e.tolerance(), before_v, before_w});
+  return after <= std::max({slack * e.tolerance(), before_v, before_w});
 }
 
 int refine_toward_input(Editor& e, double tolerance, int max_splits) {

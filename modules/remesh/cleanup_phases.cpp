@@ -62,6 +62,14 @@ PhaseCounts sharp_collapses(Editor& e, const CleanupContext& c) {
   return r;
 }
 
+PhaseCounts contact_spacing(Editor& e, const CleanupContext& c) {
+  PhaseCounts r;
+  const double shorter_than = c.thresholds.contact_short_edge * e.mean_edge();
+  r.progress = r.counts.contact_collapses = space_contacts(e, c.projector, shorter_than);
+  if (r.progress > 0) r.counts.flips = flip_edges(e, c.thresholds.flip_flatness_deg);
+  return r;
+}
+
 PhaseCounts sharp_moves(Editor& e, const CleanupContext& c) {
   PhaseCounts r;
   r.progress = r.counts.sharp_moves =

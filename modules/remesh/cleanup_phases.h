@@ -28,6 +28,8 @@ PhaseCounts relaxation(Editor& e, const CleanupContext& c);
 PhaseCounts angles(Editor& e, const CleanupContext& c);
 // Edges of sharp triangles collapsed where one vertex less leaves fewer of them.
 PhaseCounts sharp_collapses(Editor& e, const CleanupContext& c);
+// Short contact edges collapsed, the vertex left placed between its contact neighbours.
+PhaseCounts contact_spacing(Editor& e, const CleanupContext& c);
 // Moves judged by the number of sharp triangles they leave (one pass).
 PhaseCounts sharp_moves(Editor& e, const CleanupContext& c);
 // Vertices of triangles with a low Q moved to where their triangles are best shaped.

@@ -3,7 +3,8 @@
 namespace voroseal {
 
 int CleanupCounts::edits() const {
-  return valence3_removed + valence3_raised + needles_collapsed + sharp_collapses + angle_moves +
+  return valence3_removed + valence3_raised + needles_collapsed + sharp_collapses + contact_collapses +
+         angle_moves +
          quality_moves + sharp_moves + wedge_moves + tips_joined + pinch_zips + pinch_rungs +
          pinch_pockets + flips + smoothing_moves + coincident_removed + fidelity_splits +
          static_cast<int>(merges.size());
@@ -14,6 +15,7 @@ void CleanupCounts::add(const CleanupCounts& o) {
   valence3_raised += o.valence3_raised;
   needles_collapsed += o.needles_collapsed;
   sharp_collapses += o.sharp_collapses;
+  contact_collapses += o.contact_collapses;
   angle_moves += o.angle_moves;
   quality_moves += o.quality_moves;
   sharp_moves += o.sharp_moves;

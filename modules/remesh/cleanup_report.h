@@ -15,6 +15,7 @@ struct CleanupCounts {
   int valence3_raised = 0;    // contact vertices given a fourth triangle in a part (a flip)
   int needles_collapsed = 0;
   int sharp_collapses = 0;    // edges collapsed to leave fewer triangles sharper than 30 degrees
+  int contact_collapses = 0;  // short contact edges collapsed (contact spacing)
   int angle_moves = 0;        // vertex moves of the angle passes
   int quality_moves = 0;      // vertex moves of the quality passes
   int sharp_moves = 0;        // moves leaving fewer triangles sharper than 30 degrees

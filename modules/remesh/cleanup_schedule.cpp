@@ -29,6 +29,7 @@ std::vector<PhaseSpec> cleanup_schedule(const CleanupThresholds& t) {
       {"shape: relaxation",       relaxation,      1,                       always},
       {"fidelity",                fidelity,        t.fidelity_rounds,       with_tolerance},
       {"merges",                  merges,          t.merge_rounds,          with_tolerance},
+      {"shape: contact spacing",  contact_spacing, t.contact_spacing_rounds, always},
       {"shape: angles",           angles,          t.angle_passes,          always},
       {"shape: sharp collapses",  sharp_collapses, t.sharp_collapse_rounds, always},
       {"shape: angles",           angles,          t.angle_passes,          after_collapses},

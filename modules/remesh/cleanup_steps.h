@@ -201,6 +201,19 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
 // than the fidelity tolerance (where u was, and at the middles of the triangles around).
 int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_deg);
 
+// ---- contact spacing (cleanup_contacts.cpp) ----
+
+// A contact crossing the restricted Voronoi cells gets a vertex in every cell it crosses, some
+// of them across a cell's corner, and the fidelity splits add bends: contact edges much shorter
+// than the triangles around them, whose triangles are squat in every part along the contact.
+// The contact edges shorter than `shorter_than` collapse, shortest first, a contact vertex into
+// its neighbour along the contact, which then takes the best place between its two new contact
+// neighbours; kept when the triangles around are better shaped on average and none more of
+// them sharper than 30 degrees, the contact edge left keeps to the input (bend_may_go()) and the
+// surfaces are no less valid. Corners and pinned vertices other than bends stay. Returns the
+// collapses made.
+int space_contacts(Editor& e, const SurfaceProjector& projector, double shorter_than);
+
 // ---- fewer sharp triangles (cleanup_sharp.cpp) ----
 
 // The angle passes raise the smallest angle around one vertex at a time, and the quality passes
@@ -302,9 +315,9 @@ class FidelityGuard {
 };
 
 // Whether bend u may go by its collapse into v, its neighbour along the contact: the contact
-// edge from v to u's other neighbour then strays from the input contact by no more than the
-// fidelity tolerance (or than u's two edges did). Without a tolerance a bend stays.
-bool bend_may_go(Editor& e, int u, int v);
+// edge from v to u's other neighbour then strays from the input contact by no more than `slack`
+// times the fidelity tolerance (or than u's two edges did). Without a tolerance a bend stays.
+bool bend_may_go(Editor& e, int u, int v, double slack = 1.0);
 
 // ---- repair (cleanup_repair.cpp) ----
 

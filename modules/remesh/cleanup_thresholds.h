@@ -37,6 +37,15 @@ struct CleanupThresholds {
   // The quality passes move the vertices of triangles with Q below this (1 is equilateral);
   // above, the smoothing already did what a vertex move can.
   double quality_below = 0.9;
+  // Contact edges shorter than this fraction of the mean edge collapse where the triangles
+  // around get better (contact spacing): a contact crossing the cells at random gets a vertex
+  // about every 0.75 of a cell, and its triangles are squat.
+  double contact_short_edge = 0.6;
+  // ...where the contact edge left strays from the input contact by at most this many fidelity
+  // tolerances (or than the two edges did): contacts out of implicit modellers zigzag at the
+  // scale of their grid, and at the bar of the fidelity splits their bends keep every short
+  // edge; the Hausdorff distance is set elsewhere (docs/benchmarks.md).
+  double contact_spacing_slack = 3.0;
   // A wedge apex may leave its surface by this fraction of d_min: where two surfaces closer than
   // d_min may merge, opening their wedge by half of it stays within the same tolerance.
   double wedge_lift = 0.5;
@@ -55,6 +64,8 @@ struct CleanupThresholds {
   // input's roughness below the asked resolution, where splits only trade shape for pinned
   // vertices (docs/benchmarks.md).
   double fidelity_split_share = 0.02;
+  // Each contact spacing round may leave a short edge next to the one collapsed.
+  int contact_spacing_rounds = 3;
   // The angle passes move one vertex at a time; each pass frees its neighbours' moves.
   int angle_passes = 8;
   // Each collapse round may leave a new short edge next to the one collapsed.

@@ -441,6 +441,7 @@ class RemeshModule final : public Module {
                          {"valence3_raised", result.cleanup.valence3_raised},
                          {"needles_collapsed", result.cleanup.needles_collapsed},
                          {"sharp_collapses", result.cleanup.sharp_collapses},
+                         {"contact_collapses", result.cleanup.contact_collapses},
                          {"quality_moves", result.cleanup.quality_moves},
                          {"sharp_moves", result.cleanup.sharp_moves},
                          {"wedge_moves", result.cleanup.wedge_moves},

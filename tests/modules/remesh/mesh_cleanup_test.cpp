@@ -148,8 +148,8 @@ TEST(MeshCleanup, RemovesValenceThreeVertexAndNeedle) {
   EXPECT_EQ(s.triangles.size(), n - 2);
 }
 
-// Options with the smoothing, flips, angle and quality passes and sharp-edge collapses off, so
-// that the pass a test is about is measured alone.
+// Options with the smoothing, flips, angle and quality passes, sharp-edge collapses and contact
+// spacing off, so that the pass a test is about is measured alone.
 CleanupOptions moves_off() {
   CleanupOptions o;
   o.thresholds.smoothing_iterations = 0;
@@ -157,6 +157,7 @@ CleanupOptions moves_off() {
   o.thresholds.quality_passes = 0;
   o.thresholds.flip_flatness_deg = 0.0;
   o.thresholds.sharp_collapse_rounds = 0;
+  o.thresholds.contact_spacing_rounds = 0;
   o.thresholds.sharp_passes = 0;
   return o;
 }
@@ -269,6 +270,50 @@ TEST(MeshCleanup, ABendGoesWhereItsContactKeepsToTheInputWithoutIt) {
       EXPECT_EQ(collapsed, 0);
       EXPECT_EQ(s.triangles.size(), n + 3);
     }
+  }
+}
+
+TEST(MeshCleanup, ContactSpacingCollapsesAShortContactEdgeUnlessItsVertexIsHeld) {
+  // The inserted vertex leaves a contact edge of 0.3 of the lattice's edges and squat triangles
+  // in the three parts along it. With both ends free the spacing collapses it and the lattice
+  // comes back. With the other end held: the inserted vertex stays when it is held too (pinned,
+  // not a bend: a zip or a tip); as a bend it goes where its contact keeps to the input without
+  // it (a straight contact here), and only with a fidelity tolerance.
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  const SurfaceProjector projector(input);
+  const ContactArcs arcs(input);
+  const size_t n = as_remeshed(input).triangles.size();
+  struct Case {
+    bool held, pinned, bend;
+    double tolerance;
+    bool collapses;
+  };
+  for (const Case& c : {Case{false, false, false, 0.0, true}, Case{true, true, false, 0.01, false},
+                        Case{true, true, true, 0.01, true}, Case{true, true, true, 0.0, false}}) {
+    RemeshedSurface s = with_contact_vertex(input, c.pinned);
+    ASSERT_EQ(s.triangles.size(), n + 3);
+    ASSERT_GE(sharper_than_30(s), 3);
+    const int inserted = static_cast<int>(s.vertices.size()) - 1;
+    int other = -1;  // the short edge's other end: the nearest contact vertex
+    for (const Triangle& f : s.triangles)
+      for (int v : f)
+        if (v != inserted && s.features[v].kind == VertexFeature::Contact &&
+            (other < 0 || (s.vertices[v] - s.vertices[inserted]).norm() <
+                              (s.vertices[other] - s.vertices[inserted]).norm()))
+          other = v;
+    cleanup::Editor e(s, input);
+    e.set_projector(&projector);
+    e.set_fidelity(c.tolerance, &arcs);
+    if (c.bend) e.mark_bend(inserted);
+    if (c.held) e.pin(other);
+    // Half the mean edge: only the 0.3 edge is short, not the 0.7 one beyond the inserted vertex.
+    const int collapsed = cleanup::space_contacts(e, projector, 0.5 * e.mean_edge());
+    e.finish();
+    SCOPED_TRACE(::testing::Message() << "held " << c.held << " pinned " << c.pinned << " bend "
+                                      << c.bend << " tolerance " << c.tolerance);
+    EXPECT_EQ(collapsed, c.collapses ? 1 : 0);
+    EXPECT_EQ(s.triangles.size(), c.collapses ? n : n + 3);
+    if (c.collapses) EXPECT_EQ(sharper_than_30(s), 0);
   }
 }
 
