@@ -6,7 +6,9 @@ geogen scenarios x random geogen seeds x resolutions (seed counts) -> `voroseal 
 when:
   - remesh exits 0 and `check` says the output is valid;
   - the referee finds no self-intersecting pair and no border edge (the inputs are sealed);
-  - no region is gained, and every region lost is one the remesh report names as merged.
+  - no region is gained, and every region lost is one the remesh report names as merged;
+  - with --keep-topology, the referee counts the input's surface parts, contacts, corners and
+    regions in the output.
 Prints one Markdown table of pass rates and quality per scenario (and --json for the rows).
 This is a measurement, not a test; `--quick` is the slice that ctest runs.
 
@@ -119,6 +121,13 @@ def one_run(a, model, scenario, geo_seed, res, seeds, out_dir):
         row["reasons"].append(f"{crossings} crossing pairs")
     if borders != 0:
         row["reasons"].append(f"{borders} border edges")
+    if a.keep_topology:
+        # Every input feature kept: the referee's counts of the output equal the input's.
+        for key in ("surface_parts", "lines", "corners", "regions"):
+            model_n = get(mr, f"comparison.features.{key}.model", -1)
+            ref_n = get(mr, f"comparison.features.{key}.ref", -2)
+            if model_n != ref_n:
+                row["reasons"].append(f"{key} {ref_n} -> {model_n}")
     merged = len(get(rep, "topology.regions_lost", []) or [])
     if regions_in >= 0 and regions_out > regions_in:
         row["reasons"].append(f"{regions_out - regions_in} regions gained")
@@ -140,6 +149,9 @@ def main():
     ap.add_argument("--seeds", default="3000,8000", help="remesh seed counts")
     ap.add_argument("--quick", action="store_true",
                     help="the ctest slice: res 20, geogen seeds 1-3, 2000 seeds")
+    ap.add_argument("--keep-topology", action="store_true",
+                    help="remesh with --keep-topology; a run passes only when the referee counts "
+                    "as many surface parts, contacts (lines), corners and regions as in the input")
     ap.add_argument("--timeout", type=float, default=600)
     ap.add_argument("--min-pass", type=int, default=None,
                     help="exit 0 when at least this many runs pass (default: all of them)")
@@ -147,6 +159,8 @@ def main():
     ap.add_argument("--json", default=None, help="write the rows as JSON here")
     ap.add_argument("remesh_args", nargs="*", help="extra remesh options (after --)")
     a = ap.parse_args()
+    if a.keep_topology:
+        a.remesh_args = ["--keep-topology"] + a.remesh_args
     if a.quick:
         a.res, a.geo_seeds, a.seeds = "20", "1,2,3", "2000"
     if not os.path.exists(a.voroseal):

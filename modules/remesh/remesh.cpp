@@ -181,7 +181,6 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   refine.min_feature = cleanup.min_feature;
   refine.threads = options.seeds.threads;
   if (options.keep_topology) {
-    refine.max_rounds = std::max(refine.max_rounds, kKeepTopologyRounds);
     refine.min_size = h0 / kKeepTopologyRefinement;
   } else {
     refine.min_size = std::max(refine.min_size, cleanup.min_feature);

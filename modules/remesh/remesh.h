@@ -39,8 +39,9 @@ struct RemeshOptions {
   /// Refinement until the topological ball property holds (ball_refinement.h) before the mesh
   /// is built; its min_feature is set from cleanup.min_feature. max_rounds 0 only measures.
   BallRefinementOptions refinement;
-  /// No merge at all (--keep-topology): d_min 0, and the refinement goes on until every failure
-  /// is resolved or its cells would be smaller than the edge length / kKeepTopologyRefinement.
+  /// No merge at all (--keep-topology): d_min 0, and the refinement goes on, for up to its
+  /// max_rounds (the command line's default: kKeepTopologyRounds), until every failure is
+  /// resolved or its cells would be smaller than the edge length / kKeepTopologyRefinement.
   bool keep_topology = false;
 };
 

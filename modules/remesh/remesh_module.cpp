@@ -108,6 +108,32 @@ CheckEntry holes_made(const StructuralModel& input, const StructuralModel& outpu
   return entry;
 }
 
+/// With --keep-topology the user asked for every input feature: an input surface part, contact,
+/// corner, region or pair of touching regions without its counterpart is a defect, refined
+/// where it lies (the features' places) like an invalid remesh, and refused if it stays.
+CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& topology) {
+  CheckEntry entry;
+  entry.name = "topology_kept";
+  const FeatureAudit& audit = topology.features;
+  entry.count = static_cast<long>(audit.lost.size() + audit.regions_lost.size() +
+                                  audit.region_contacts_lost.size());
+  static const char* kinds[] = {"surface part", "contact", "corner"};
+  for (const LostFeature& f : audit.lost) {
+    if (entry.examples.size() >= static_cast<size_t>(kPlacesRefined)) break;
+    entry.examples.push_back({std::string("input ") + kinds[f.kind] + " " + std::to_string(f.id) +
+                                  " without a counterpart",
+                              f.location + input.frame.origin,
+                              {}});
+  }
+  entry.message = entry.count == 0
+                      ? "every input surface part, contact, corner and region kept"
+                      : std::to_string(audit.lost.size()) + " surface parts, contacts or corners, " +
+                            std::to_string(audit.regions_lost.size()) + " regions and " +
+                            std::to_string(audit.region_contacts_lost.size()) +
+                            " region contacts of the input without a counterpart";
+  return entry;
+}
+
 /// The verdict on a remesh: `voroseal check`'s on the model as written (cracks show only when
 /// the file is read back), plus the holes it made; `text` is the file to write at `out`.
 struct Judgement {
@@ -126,7 +152,7 @@ struct Judgement {
 };
 
 Judgement judge(const StructuralModel& input, const RemeshResult& result, const std::string& out,
-                const WriteOptions& write) {
+                const WriteOptions& write, bool keep_topology) {
   CheckOptions options;
   options.max_examples = kPlacesRefined;
   Judgement j;
@@ -137,6 +163,7 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
     j.verdict = check_model(result.model, options);
   }
   j.verdict.checks.push_back(holes_made(input, result.model, result.topology.input_part_of_output));
+  if (keep_topology) j.verdict.checks.push_back(topology_kept(input, result.topology));
   j.regions_gained = static_cast<long>(result.topology.regions_gained.size());
   return j;
 }
@@ -270,10 +297,11 @@ class RemeshModule final : public Module {
     p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
                      "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
                      0.1, 90.0));
-    p.push_back(spec("refine-rounds", ParameterType::Int, BallRefinementOptions{}.max_rounds,
-                     "rounds of refinement where a restricted Voronoi cell fails the topological ball "
-                     "property by more than d_min (0: none, the failures are only counted)",
-                     0, 20));
+    static const std::string refine_rounds_help =
+        "rounds of refinement where a restricted Voronoi cell fails the topological ball "
+        "property by more than d_min (default 0: none, the failures are only counted; with "
+        "--keep-topology " + std::to_string(kKeepTopologyRounds) + ")";
+    p.push_back(spec("refine-rounds", ParameterType::Int, nullptr, refine_rounds_help.c_str(), 0, 20));
     p.push_back(spec("refine-iterations", ParameterType::Int, BallRefinementOptions{}.iterations,
                      "optimiser iterations after each refinement round", 0, 1e6));
     p.push_back(spec("repair-rounds", ParameterType::Int, kRepairRounds,
@@ -336,7 +364,10 @@ class RemeshModule final : public Module {
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
     remesh_options.clean_up = parameters.get_bool("cleanup");
-    remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
+    remesh_options.refinement.max_rounds =
+        parameters.has("refine-rounds") ? static_cast<int>(parameters.get_int("refine-rounds"))
+        : parameters.get_bool("keep-topology") ? kKeepTopologyRounds
+                                               : BallRefinementOptions{}.max_rounds;
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
     remesh_options.refinement.iterations = static_cast<int>(parameters.get_int("refine-iterations"));
     if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
@@ -353,7 +384,8 @@ class RemeshModule final : public Module {
     const std::string out =
         parameters.has("output") ? parameters.get_string("output") : std::string();
     RemeshResult result = remesh_from_seeds(input, std::move(seeds), remesh_options, context.log);
-    Judgement judgement = judge(input, result, out, write);
+    const bool keep_topology = remesh_options.keep_topology;
+    Judgement judgement = judge(input, result, out, write, keep_topology);
     // Where the remesh came out invalid or closed a pocket, the dual was not faithful there:
     // smaller cells around each place, the seeds optimised again, the mesh built again. Each
     // round refines the last; the remesh with the fewest defects stays.
@@ -373,7 +405,7 @@ class RemeshModule final : public Module {
         const int added = refine_at_places(input, last, options, places, repair, round,
                                            context.log, quiet);
         RemeshResult next = remesh_from_seeds(input, last, remesh_options, context.log);
-        Judgement j = judge(input, next, out, write);
+        Judgement j = judge(input, next, out, write, keep_topology);
         const long defects = j.defects();
         repair_rounds.push_back({{"places", places.size()},
                                  {"seeds_added", added},
@@ -508,8 +540,9 @@ class RemeshModule final : public Module {
         kept = "; nothing written to " + out + " (--keep-invalid PATH writes it for inspection)";
       }
       context.log.error(
-          "remesh: the remeshed model is not valid (what `voroseal check` finds, and holes the "
-          "input has not): " + defects_text(verdict) + kept);
+          "remesh: the remeshed model is not valid (what `voroseal check` finds, holes the "
+          "input has not" + std::string(keep_topology ? ", input features without a counterpart" : "") +
+          "): " + defects_text(verdict) + kept);
     }
     // TetGen on crossing surfaces fails, and through a hole it fills two regions as one: the
     // volume mesh of an invalid model would only hide what went wrong.

@@ -186,6 +186,44 @@ TEST(RemeshModule, RefinesAnInvalidRemeshButJudgesTheRawDualAsItIs) {
   EXPECT_EQ(rounds(false), 0u);
 }
 
+TEST(RemeshModule, KeepTopologyRefusesAnOutputThatLostAnInputFeature) {
+  // A layer 0.001 thick under cells of about 0.3, and one refinement round (the default 8 would
+  // take minutes, down to cells of h / 32, still thicker than the layer): its contacts with the
+  // box merge away. By default that is a deliberate merge, reported, of a valid model; asked to
+  // keep the topology, the remesh refuses it, naming the features lost. A layer of 0.2 is kept,
+  // and --keep-topology accepts it.
+  auto run = [](double thickness, bool keep) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    harness.context.model = std::make_shared<StructuralModel>(
+        build_model(test::thin_layer_box(4, thickness)));
+    harness.module.run(harness.context,
+                       Parameters(harness.module.parameters(),
+                                  {{"seeds", 200}, {"iterations", 20}, {"repair-rounds", 0},
+                                   {"refine-rounds", 1}, {"refine-iterations", 5},
+                                   {"keep-topology", keep}}));
+    return std::make_pair(harness.context.report.at("remesh"), harness.context.exit_code);
+  };
+  auto failed = [](const nlohmann::json& r) {
+    std::vector<std::string> names;
+    for (const auto& f : r.at("validity").at("failed")) names.push_back(f.at("check"));
+    return names;
+  };
+  const auto [merged, merged_exit] = run(0.001, false);
+  EXPECT_TRUE(merged.at("valid").get<bool>());
+  EXPECT_EQ(merged_exit, 0);
+  EXPECT_FALSE(merged.at("topology").at("features_lost").empty());
+
+  const auto [refused, refused_exit] = run(0.001, true);
+  EXPECT_FALSE(refused.at("valid").get<bool>());
+  EXPECT_EQ(refused_exit, 1);
+  EXPECT_EQ(failed(refused), std::vector<std::string>{"topology_kept"});
+
+  const auto [kept, kept_exit] = run(0.2, true);
+  EXPECT_TRUE(kept.at("valid").get<bool>()) << kept.at("validity").dump();
+  EXPECT_EQ(kept_exit, 0);
+  EXPECT_EQ(kept.at("topology").at("after").at("regions").get<int>(), 3);
+}
+
 TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsNotWrittenAndNamesItsDefects) {
   // A fault crossing the horizon without a contact (the input itself is not conformal): the
   // remeshed surfaces cross where the input's do, which no clean-up can undo. The verdict is
