@@ -135,7 +135,8 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
 }
 
 /// The verdict on a remesh: `voroseal check`'s on the model as written (cracks show only when
-/// the file is read back), plus the holes it made; `text` is the file to write at `out`.
+/// the file is read back), plus the holes it made and, with --keep-topology, the input features
+/// it lost; `text` is the file to write at `out`.
 struct Judgement {
   std::string text;
   ValidityReport verdict;
@@ -502,7 +503,8 @@ class RemeshModule final : public Module {
     if (left.invalid_left() > 0) {
       const std::string census = "remesh: the clean-up left " +
                                  std::to_string(left.intersections_left) + " crossing pairs, " +
-                                 std::to_string(left.holes_left) + " holes, " + std::to_string(left.leaks_left) + " leaks, " +
+                                 std::to_string(left.holes_left) + " holes, " +
+                                 std::to_string(left.leaks_left) + " leaks, " +
                                  std::to_string(left.degenerate_left) + " degenerate triangles and " +
                                  std::to_string(left.pinches_left) + " pinched vertices";
       if (judgement.verdict.valid())
