@@ -3,11 +3,10 @@
 namespace voroseal {
 
 int CleanupCounts::edits() const {
-  return valence3_removed + valence3_raised + needles_collapsed + sharp_collapses + contact_collapses +
-         angle_moves +
-         quality_moves + sharp_moves + wedge_moves + tips_joined + pinch_zips + pinch_rungs +
-         pinch_pockets + flips + smoothing_moves + coincident_removed + fidelity_splits +
-         static_cast<int>(merges.size());
+  return valence3_removed + valence3_raised + needles_collapsed + sharp_collapses +
+         contact_collapses + angle_moves + quality_moves + sharp_moves + wedge_moves + tips_joined +
+         pinch_zips + pinch_rungs + pinch_pockets + flips + smoothing_moves + coincident_removed +
+         fidelity_splits + static_cast<int>(merges.size());
 }
 
 void CleanupCounts::add(const CleanupCounts& o) {

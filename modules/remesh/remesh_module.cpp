@@ -110,6 +110,14 @@ CheckEntry holes_made(const StructuralModel& input, const StructuralModel& outpu
   return entry;
 }
 
+/// "surface", "contact" or "corner": the report's and the log's name of a feature's kind.
+const char* feature_kind(VertexFeature::Kind kind) {
+  return kind == VertexFeature::Surface   ? "surface"
+         : kind == VertexFeature::Contact ? "contact"
+         : kind == VertexFeature::Corner  ? "corner"
+                                          : "unknown";
+}
+
 /// With --keep-topology the user asked for every input feature: an input surface part, contact,
 /// corner, region or pair of touching regions without its counterpart is a defect, refined
 /// where it lies (the features' places) like an invalid remesh, and refused if it stays.
@@ -119,11 +127,10 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
   const FeatureAudit& audit = topology.features;
   entry.count = static_cast<long>(audit.lost.size() + audit.regions_lost.size() +
                                   audit.region_contacts_lost.size());
-  static const char* kinds[] = {"surface part", "contact", "corner"};
   for (const LostFeature& f : audit.lost) {
     if (entry.examples.size() >= static_cast<size_t>(kPlacesRefined)) break;
-    entry.examples.push_back({std::string("input ") + kinds[f.kind] + " " + std::to_string(f.id) +
-                                  " without a counterpart",
+    entry.examples.push_back({std::string("input ") + feature_kind(f.kind) + " " +
+                                  std::to_string(f.id) + " without a counterpart",
                               f.location + input.frame.origin,
                               {}});
   }
@@ -507,7 +514,8 @@ class RemeshModule final : public Module {
                                  std::to_string(left.intersections_left) + " crossing pairs, " +
                                  std::to_string(left.holes_left) + " holes, " +
                                  std::to_string(left.leaks_left) + " leaks, " +
-                                 std::to_string(left.degenerate_left) + " degenerate triangles and " +
+                                 std::to_string(left.degenerate_left) +
+                                 " degenerate triangles and " +
                                  std::to_string(left.pinches_left) + " pinched vertices";
       if (judgement.verdict.valid())
         context.log.debug(census + "; the model as written is valid");
@@ -545,7 +553,8 @@ class RemeshModule final : public Module {
       }
       context.log.error(
           "remesh: the remeshed model is not valid (what `voroseal check` finds, holes the "
-          "input has not" + std::string(keep_topology ? ", input features without a counterpart" : "") +
+          "input has not" +
+          std::string(keep_topology ? ", input features without a counterpart" : "") +
           "): " + defects_text(verdict) + kept);
     }
     // TetGen on crossing surfaces fails, and through a hole it fills two regions as one: the
@@ -674,12 +683,6 @@ class RemeshModule final : public Module {
       log.warning("remesh: input regions " + wrong +
                   " do not enclose their volume with the sides listed (run `voroseal check` on the input): the "
                   "clean-up's leak counts refer to them, the output's regions are inferred from its surfaces");
-  }
-  static const char* feature_kind(VertexFeature::Kind kind) {
-    return kind == VertexFeature::Surface   ? "surface"
-           : kind == VertexFeature::Contact ? "contact"
-           : kind == VertexFeature::Corner  ? "corner"
-                                            : "unknown";
   }
   // A part's name; a contact's parts; a corner's contacts.
   static std::string feature_name(const LostFeature& f, const StructuralModel& input) {

@@ -207,6 +207,18 @@ RemeshedSurface with_contact_vertex(const StructuralModel& input, bool pinned) {
   return s;
 }
 
+// The contact vertex of a triangle nearest to v, v aside (-1: none).
+int nearest_contact_vertex(const RemeshedSurface& s, int v) {
+  int nearest = -1;
+  for (const Triangle& f : s.triangles)
+    for (int w : f)
+      if (w != v && s.features[w].kind == VertexFeature::Contact &&
+          (nearest < 0 || (s.vertices[w] - s.vertices[v]).norm() <
+                              (s.vertices[nearest] - s.vertices[v]).norm()))
+        nearest = w;
+  return nearest;
+}
+
 int left_invalid(const CleanupReport& r) {
   return r.intersections_left + r.holes_left + r.leaks_left + r.degenerate_left;
 }
@@ -248,13 +260,7 @@ TEST(MeshCleanup, ABendGoesWhereItsContactKeepsToTheInputWithoutIt) {
     RemeshedSurface s = with_contact_vertex(input, true);
     ASSERT_EQ(s.triangles.size(), n + 3);
     const int bend = static_cast<int>(s.vertices.size()) - 1;
-    int held = -1;
-    for (const Triangle& f : s.triangles)
-      for (int v : f)
-        if (v != bend && s.features[v].kind == VertexFeature::Contact &&
-            (held < 0 || (s.vertices[v] - s.vertices[bend]).norm() <
-                             (s.vertices[held] - s.vertices[bend]).norm()))
-          held = v;
+    const int held = nearest_contact_vertex(s, bend);
     cleanup::Editor e(s, input);
     e.set_projector(&projector);
     e.set_fidelity(tolerance, &arcs);
@@ -294,13 +300,7 @@ TEST(MeshCleanup, ContactSpacingCollapsesAShortContactEdgeUnlessItsVertexIsHeld)
     ASSERT_EQ(s.triangles.size(), n + 3);
     ASSERT_GE(sharper_than_30(s), 3);
     const int inserted = static_cast<int>(s.vertices.size()) - 1;
-    int other = -1;  // the short edge's other end: the nearest contact vertex
-    for (const Triangle& f : s.triangles)
-      for (int v : f)
-        if (v != inserted && s.features[v].kind == VertexFeature::Contact &&
-            (other < 0 || (s.vertices[v] - s.vertices[inserted]).norm() <
-                              (s.vertices[other] - s.vertices[inserted]).norm()))
-          other = v;
+    const int other = nearest_contact_vertex(s, inserted);  // the short edge's other end
     cleanup::Editor e(s, input);
     e.set_projector(&projector);
     e.set_fidelity(c.tolerance, &arcs);
@@ -313,7 +313,9 @@ TEST(MeshCleanup, ContactSpacingCollapsesAShortContactEdgeUnlessItsVertexIsHeld)
                                       << c.bend << " tolerance " << c.tolerance);
     EXPECT_EQ(collapsed, c.collapses ? 1 : 0);
     EXPECT_EQ(s.triangles.size(), c.collapses ? n : n + 3);
-    if (c.collapses) EXPECT_EQ(sharper_than_30(s), 0);
+    if (c.collapses) {
+      EXPECT_EQ(sharper_than_30(s), 0);
+    }
   }
 }
 
