@@ -39,7 +39,8 @@ std::string fd_path(int fd) { return "/proc/self/fd/" + std::to_string(fd); }
 
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& target, const std::vector<std::string>& protected_paths)
+AtomicFile::AtomicFile(const std::string& target, const std::vector<std::string>& protected_paths,
+                       Temporary temporary)
     : target_(target) {
   if (target.empty()) throw OutputError("empty output file name");
   if (is_protected_path(target, protected_paths))
@@ -50,10 +51,12 @@ AtomicFile::AtomicFile(const std::string& target, const std::vector<std::string>
   directory_ = t.has_parent_path() ? t.parent_path().string() : std::string(".");
   buffer_.resize(1 << 20);
   out_.rdbuf()->pubsetbuf(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  (void)temporary;  // without O_TMPFILE every temporary is named
 #ifdef O_TMPFILE
   // An unnamed file is reopened through /proc (the stream needs a path) and linked in place
   // by commit(); where either is unsupported the named temporary below takes over.
-  unnamed_fd_ = ::open(directory_.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+  if (temporary == Temporary::unnamed_if_possible)
+    unnamed_fd_ = ::open(directory_.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
   if (unnamed_fd_ >= 0) {
     ::fchmod(unnamed_fd_, 0644);
     out_.open(fd_path(unnamed_fd_), std::ios::binary | std::ios::trunc);

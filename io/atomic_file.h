@@ -22,10 +22,15 @@ bool is_protected_path(const std::string& path, const std::vector<std::string>& 
 
 class AtomicFile {
  public:
+  /// The kind of temporary file: unnamed where the file system allows it, or always named (the
+  /// fallback, chosen explicitly so that it can be tested on any file system).
+  enum class Temporary { unnamed_if_possible, named };
+
   /// Creates the temporary file in the directory of `target`.
   /// \throws OutputError when `target` is protected, is a directory, or the temporary file
   /// cannot be created (missing directory, permissions).
-  AtomicFile(const std::string& target, const std::vector<std::string>& protected_paths);
+  AtomicFile(const std::string& target, const std::vector<std::string>& protected_paths,
+             Temporary temporary = Temporary::unnamed_if_possible);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;

@@ -388,7 +388,7 @@ std::vector<int> ids_with_names(const std::vector<int>& ids, const std::vector<s
 SurfaceSoup read_msh(const TextSource& source) {
   MshData d = MshParser(source).parse();
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   soup.points = std::move(d.nodes);
   soup.triangles = std::move(d.triangles);
   std::vector<std::string> names;
@@ -406,7 +406,7 @@ VolumeMesh read_msh_volume(const TextSource& source) {
   mesh.triangle_surface = ids_and_names(d.triangle_tag, 2, d, "surface_", mesh.surface_names);
   mesh.tets = std::move(d.tets);
   mesh.tet_region = ids_and_names(d.tet_tag, 3, d, "region_", mesh.region_names);
-  validate_volume_mesh(mesh, source.name);
+  validate_volume_mesh(mesh, source.name());
   return mesh;
 }
 

@@ -206,7 +206,7 @@ SurfaceSoup read_model3d(const TextSource& source) {
   }
 
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   soup.has_explicit_parts = true;
   soup.groups.resize(tfaces.size());
   std::vector<std::vector<Triangle>> group_triangles(tfaces.size());

@@ -181,7 +181,7 @@ TsurfObject parse_tsurf_object(LineReader& in, double default_zsign) {
 SurfaceSoup read_tsurf(const TextSource& source) {
   LineReader in(source);
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   std::map<std::string, int> seen_names;
   int objects = 0;
   while (in.next_nonblank()) {

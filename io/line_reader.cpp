@@ -6,11 +6,20 @@
 #include <fstream>
 #include <sstream>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "framework/core/error.h"
 
 namespace voroseal {
 
 namespace {
+
+// The longest line a text model file may have (a GOCAD name, a Gmsh entity line are far
+// shorter).
+constexpr size_t kMaxLineBytes = size_t{1} << 20;
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -24,28 +33,42 @@ std::string quoted(std::string_view token) {
 
 }  // namespace
 
+TextSource::TextSource(std::string name, std::string text) : name_(std::move(name)) {
+  auto owned = std::make_shared<const std::string>(std::move(text));
+  text_ = *owned;
+  storage_ = std::move(owned);
+}
+
+TextSource::TextSource(std::string name, std::shared_ptr<const void> storage, std::string_view text)
+    : name_(std::move(name)), storage_(std::move(storage)), text_(text) {}
+
 TextSource load_text(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, 0, "is a directory, not a model file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open file");
-  // One allocation of the file's size where it has one (not a pipe), not a growing buffer.
-  TextSource source{path, {}};
-  const std::uintmax_t size =
-      std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
-  if (!ec && size > 0) {
-    source.text.resize(static_cast<size_t>(size));
-    in.read(source.text.data(), static_cast<std::streamsize>(size));
-    source.text.resize(static_cast<size_t>(in.gcount()));
-    if (in.bad()) throw InputError(path, 0, "cannot read file");
-    in.clear();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError(path, 0, "cannot open file");
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    // A mapping costs no reading until a page is touched: a 2 GB file whose header claims more
+    // than it holds is refused at once. The mapping outlives the descriptor.
+    const auto size = static_cast<size_t>(st.st_size);
+    void* data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    ::close(fd);
+    if (data == MAP_FAILED) throw InputError(path, 0, "cannot read file");
+    ::madvise(data, size, MADV_SEQUENTIAL);
+    std::shared_ptr<const void> mapping(
+        data, [size](const void* p) { ::munmap(const_cast<void*>(p), size); });
+    return TextSource(path, std::move(mapping),
+                      std::string_view(static_cast<const char*>(data), size));
   }
-  std::ostringstream rest;  // what a growing file or a pipe holds beyond its size
-  rest << in.rdbuf();
+  ::close(fd);
+  std::ifstream in(path, std::ios::binary);  // a pipe, a special file or an empty file
+  if (!in) throw InputError(path, 0, "cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
   if (in.bad()) throw InputError(path, 0, "cannot read file");
-  source.text += rest.str();
-  return source;
+  return TextSource(path, text.str());
 }
 
 bool parse_integer(std::string_view token, long long& value) {
@@ -69,15 +92,21 @@ bool LineReader::next() {
     replay_ = false;
     return true;
   }
-  const std::string& s = source_.text;
+  const std::string_view s = source_.text();
   if (pos_ >= s.size()) {
     text_ = {};
     tokens_.clear();
     return false;
   }
-  size_t end = s.find('\n', pos_);
-  if (end == std::string::npos) end = s.size();
-  text_ = std::string_view(s).substr(pos_, end - pos_);
+  // The newline is looked for within kMaxLineBytes only: a binary or corrupt file is refused
+  // after reading that much, not after reading all of it.
+  const std::string_view window = s.substr(pos_, kMaxLineBytes + 1);
+  const size_t found = window.find('\n');
+  if (found == std::string_view::npos && window.size() > kMaxLineBytes)
+    fail_at(line_ + 1, "line longer than " + std::to_string(kMaxLineBytes >> 20) +
+                           " MiB: not a text model file");
+  const size_t end = found == std::string_view::npos ? s.size() : pos_ + found;
+  text_ = s.substr(pos_, end - pos_);
   while (!text_.empty() && text_.back() == '\r') text_.remove_suffix(1);
   pos_ = end < s.size() ? end + 1 : end;
   ++line_;
@@ -141,10 +170,12 @@ void LineReader::require(size_t n, const char* what) const {
          std::to_string(tokens_.size()));
 }
 
-void LineReader::fail(const std::string& message) const { throw InputError(source_.name, line_, message); }
+void LineReader::fail(const std::string& message) const {
+  throw InputError(source_.name(), line_, message);
+}
 
 void LineReader::fail_at(long line, const std::string& message) const {
-  throw InputError(source_.name, line, message);
+  throw InputError(source_.name(), line, message);
 }
 
 std::string_view TokenReader::peek() {

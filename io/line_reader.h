@@ -1,24 +1,40 @@
 // Line-by-line reading of text model files with whitespace tokens, strict number parsing and
 // errors that name "file:line" the same way for every reader.
 //
-// A file is loaded at once (TextSource) so that readers can also run on a buffer (fuzzing)
-// and can cap declared element counts by what the file can possibly hold.
+// A file is mapped at once (TextSource) so that readers can also run on a buffer (fuzzing)
+// and can cap declared element counts by what the file can possibly hold, before reading it.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace voroseal {
 
-/// The whole text of an input, with the name used in messages.
-struct TextSource {
-  std::string name;
-  std::string text;
+/// The whole text of an input, with the name used in messages. The text is either owned or a
+/// read-only mapping of the file, so that a header's counts are checked against the file's size
+/// before its pages are read.
+class TextSource {
+ public:
+  /// An input held in memory (a buffer, a fuzzer's data).
+  TextSource(std::string name, std::string text);
+
+  const std::string& name() const { return name_; }
+  std::string_view text() const { return text_; }
+
+ private:
+  friend TextSource load_text(const std::string& path);
+  TextSource(std::string name, std::shared_ptr<const void> storage, std::string_view text);
+
+  std::string name_;
+  std::shared_ptr<const void> storage_;  // the owned string or the mapping, shared by copies
+  std::string_view text_;
 };
 
-/// Loads a file. \throws InputError(path, 0, ...) when it cannot be opened or read.
+/// Maps a regular file (reads a pipe or a special file). \throws InputError(path, 0, ...) when
+/// it cannot be opened or read.
 TextSource load_text(const std::string& path);
 
 /// Strict number parsing: the whole token must be the number ('+' sign allowed).
@@ -56,11 +72,11 @@ class LineReader {
   [[noreturn]] void fail(const std::string& message) const;
   [[noreturn]] void fail_at(long line, const std::string& message) const;
 
-  const std::string& name() const { return source_.name; }
+  const std::string& name() const { return source_.name(); }
   /// Size of the whole input and of what is left after the current line, in bytes: a
   /// declared count larger than what the rest can hold is an error, not an allocation.
-  size_t bytes() const { return source_.text.size(); }
-  size_t remaining_bytes() const { return source_.text.size() - pos_; }
+  size_t bytes() const { return source_.text().size(); }
+  size_t remaining_bytes() const { return source_.text().size() - pos_; }
 
  private:
   void tokenize();

@@ -178,7 +178,7 @@ void write_header_and_vertices(std::ostream& out, const std::vector<Vec3>& verti
 SurfaceSoup read_medit(const TextSource& source) {
   MeditMesh m = MeditParser(source).parse();
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   soup.points = std::move(m.vertices);
   soup.triangles = std::move(m.triangles);
   std::vector<int> ids(m.triangle_refs.begin(), m.triangle_refs.end());
@@ -195,7 +195,7 @@ VolumeMesh read_medit_volume(const TextSource& source) {
   mesh.tet_region = ids_from_refs(m.tet_refs, "region_", kNameTableLimit, mesh.region_names);
   mesh.triangles = std::move(m.triangles);
   mesh.triangle_surface = ids_from_refs(m.triangle_refs, "surface_", kNameTableLimit, mesh.surface_names);
-  validate_volume_mesh(mesh, source.name);
+  validate_volume_mesh(mesh, source.name());
   return mesh;
 }
 

@@ -52,7 +52,7 @@ void require_readable_extension(const std::string& path) {
 }
 
 SurfaceSoup read_soup_source(const TextSource& source) {
-  const std::string ext = extension(source.name);
+  const std::string ext = extension(source.name());
   if (ext == ".ml") return read_model3d(source);
   if (ext == ".ts") return read_tsurf(source);
   if (ext == ".obj") return read_obj(source);

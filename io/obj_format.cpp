@@ -30,7 +30,7 @@ struct GroupMeta {
 SurfaceSoup read_obj(const TextSource& source) {
   LineReader in(source);
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   std::map<std::string, int> group_index;
   std::map<std::string, GroupMeta> meta;
   int current = -1;

@@ -143,7 +143,7 @@ VolumeMesh read_tetgen(const TextSource& node_source, const TextSource& ele_sour
     in.expect_end();
     mesh.triangle_surface = ids_from_refs(surface_refs, "surface_", kNameTableLimit, mesh.surface_names);
   }
-  validate_volume_mesh(mesh, ele_source.name);
+  validate_volume_mesh(mesh, ele_source.name());
   return mesh;
 }
 

@@ -32,19 +32,24 @@ class XmlScanner {
     }
   };
 
-  explicit XmlScanner(const TextSource& source) : source_(source), text_(source.text) {
-    for (size_t i = 0; i < text_.size(); ++i)
-      if (text_[i] == '\n') newlines_.push_back(i);
-  }
+  explicit XmlScanner(const TextSource& source) : source_(source), text_(source.text()) {}
 
   /// 1-based line of a text position; the end of the text belongs to the last line.
   long line_of(size_t pos) const {
     if (text_.empty()) return 0;
     pos = std::min(pos, text_.size() - 1);
-    return static_cast<long>(std::lower_bound(newlines_.begin(), newlines_.end(), pos) - newlines_.begin()) + 1;
+    // Lines are counted from the last position asked (positions mostly grow), so that a file
+    // is not scanned for its newlines before its first tag is read.
+    if (pos < counted_pos_) {
+      counted_pos_ = 0;
+      counted_line_ = 1;
+    }
+    counted_line_ += std::count(text_.begin() + counted_pos_, text_.begin() + pos, '\n');
+    counted_pos_ = pos;
+    return counted_line_;
   }
   [[noreturn]] void fail(size_t pos, const std::string& message) const {
-    throw InputError(source_.name, line_of(pos), message);
+    throw InputError(source_.name(), line_of(pos), message);
   }
 
   /// Next element tag; false at the end of the text (only blank text may remain).
@@ -81,7 +86,7 @@ class XmlScanner {
     return range;
   }
 
-  const std::string& text() const { return text_; }
+  std::string_view text() const { return text_; }
 
  private:
   size_t skip_past(size_t from, const char* terminator) {
@@ -122,7 +127,7 @@ class XmlScanner {
       const size_t key_start = i;
       while (i < text_.size() && name_char(text_[i])) ++i;
       if (i == key_start) fail(i, "malformed attribute in <" + tag.name + ">");
-      std::string key = text_.substr(key_start, i - key_start);
+      std::string key(text_.substr(key_start, i - key_start));
       while (i < text_.size() && std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
       if (i >= text_.size() || text_[i] != '=') fail(i, "attribute " + key + " of <" + tag.name + "> has no value");
       ++i;
@@ -140,8 +145,9 @@ class XmlScanner {
   }
 
   const TextSource& source_;
-  const std::string& text_;
-  std::vector<size_t> newlines_;
+  std::string_view text_;
+  mutable size_t counted_pos_ = 0;  // line_of(): the newlines before here are counted
+  mutable long counted_line_ = 1;
   size_t pos_ = 0;
 };
 
@@ -153,9 +159,21 @@ struct VtuData {
   long connectivity_line = 0, offsets_line = 0, types_line = 0, surface_line = 0, region_line = 0;  // DataArray tags
 };
 
+// True when `text` ends, but for white space, with "</VTKFile>" (spaces allowed before '>').
+bool ends_with_closing_tag(std::string_view text) {
+  size_t end = text.size();
+  auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (end > 0 && space(text[end - 1])) --end;
+  if (end == 0 || text[end - 1] != '>') return false;
+  --end;
+  while (end > 0 && space(text[end - 1])) --end;
+  const std::string_view tail = "</VTKFile";
+  return end >= tail.size() && text.substr(end - tail.size(), tail.size()) == tail;
+}
+
 class VtuParser {
  public:
-  explicit VtuParser(const TextSource& source) : xml_(source), name_(source.name) {}
+  explicit VtuParser(const TextSource& source) : xml_(source), name_(source.name()) {}
 
   VtuData parse() {
     XmlScanner::Tag tag;
@@ -164,6 +182,12 @@ class VtuParser {
     const std::string* type = tag.attribute("type");
     if (!type || *type != "UnstructuredGrid") xml_.fail(tag.begin, "only VTK UnstructuredGrid files are supported");
     if (tag.attribute("compressor")) xml_.fail(tag.begin, "compressed VTK files are not supported");
+    // Checked on the file's last bytes first: a truncated or padded file is refused before its
+    // data is read.
+    if (!ends_with_closing_tag(xml_.text()))
+      xml_.fail(tag.begin,
+                "the <VTKFile> opened here is not closed by </VTKFile> at the end of "
+                "the file (truncated?)");
     std::string section;
     bool piece = false;
     while (xml_.next(tag)) {
@@ -205,7 +229,7 @@ class VtuParser {
     std::vector<T> out;
     if (tag.self_closing) return out;
     const auto [begin, end] = xml_.content();
-    const std::string& s = xml_.text();
+    const std::string_view s = xml_.text();
     size_t i = begin;
     while (i < end) {
       while (i < end && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
@@ -414,12 +438,13 @@ void write_footer(std::ostream& out) { out << "    </Piece>\n  </UnstructuredGri
 
 SurfaceSoup read_vtu(const TextSource& source) {
   const VtuData d = VtuParser(source).parse();
-  VtuCells c = cells_of(d, source.name, false);
+  VtuCells c = cells_of(d, source.name(), false);
   SurfaceSoup soup;
-  soup.source = source.name;
+  soup.source = source.name();
   soup.points = d.points;
   soup.triangles = std::move(c.triangles);
-  const std::vector<int> ids = checked_ids(c.triangle_surface, source.name, d.surface_line, "surface", nullptr);
+  const std::vector<int> ids =
+      checked_ids(c.triangle_surface, source.name(), d.surface_line, "surface", nullptr);
   group_triangles_by_id(soup, ids, {}, "surface_");
   require_triangles(soup);
   return soup;
@@ -427,14 +452,16 @@ SurfaceSoup read_vtu(const TextSource& source) {
 
 VolumeMesh read_vtu_volume(const TextSource& source) {
   const VtuData d = VtuParser(source).parse();
-  VtuCells c = cells_of(d, source.name, true);
+  VtuCells c = cells_of(d, source.name(), true);
   VolumeMesh mesh;
   set_volume_vertices(mesh, d.points);
   mesh.triangles = std::move(c.triangles);
-  mesh.triangle_surface = checked_ids(c.triangle_surface, source.name, d.surface_line, "surface", &mesh.surface_names);
+  mesh.triangle_surface = checked_ids(c.triangle_surface, source.name(), d.surface_line, "surface",
+                                      &mesh.surface_names);
   mesh.tets = std::move(c.tets);
-  mesh.tet_region = checked_ids(c.tet_region, source.name, d.region_line, "region", &mesh.region_names);
-  validate_volume_mesh(mesh, source.name);
+  mesh.tet_region =
+      checked_ids(c.tet_region, source.name(), d.region_line, "region", &mesh.region_names);
+  validate_volume_mesh(mesh, source.name());
   return mesh;
 }
 

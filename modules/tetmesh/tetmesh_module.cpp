@@ -8,6 +8,7 @@
 
 #include "framework/core/error.h"
 #include "framework/geometry/volume_quality.h"
+#include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
 #include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
@@ -24,6 +25,19 @@ constexpr double kWedgeReportDeg = 30.0;
 // Tets with a dihedral angle under this are nearly flat: finite-element and finite-volume
 // solvers fail on them or lose their accuracy there, so they are warned about.
 constexpr double kFlatTetDeg = 1.0;
+// Memory estimate of a --max-volume run: TetGen's quality bound makes tets several times
+// smaller than the volume bound, and a tet costs TetGen and the mesh about this many bytes
+// (docs/benchmarks.md, "Reliability").
+constexpr double kTetsPerBoundVolume = 4.0;
+constexpr double kBytesPerTet = 256.0;
+
+// The volume the tets will fill: the regions' (the closed surfaces' when there are none).
+double meshed_volume(const StructuralModel& model) {
+  double volume = 0.0;
+  for (const Region& region : model.regions) volume += std::abs(model.signed_volume(region.sides));
+  if (model.regions.empty()) volume = std::abs(model.signed_volume(model.universe.sides));
+  return volume;
+}
 
 // The tets of `mesh` with a dihedral angle under kFlatTetDeg, and the flattest of them.
 struct FlatTets {
@@ -110,6 +124,14 @@ class TetmeshModule : public Module {
     options.radius_edge_ratio = parameters.get_double("quality");
     options.min_dihedral_deg = parameters.get_double("min-dihedral");
     if (parameters.has("max-volume")) options.max_volume = parameters.get_double("max-volume");
+    if (options.max_volume > 0.0) {
+      // Refused before TetGen starts: a tiny bound would run for hours towards billions of tets.
+      const double tets = kTetsPerBoundVolume * meshed_volume(model) / options.max_volume;
+      char asked[96];
+      std::snprintf(asked, sizeof asked, "tetmesh --max-volume %g (%.3g tets)", options.max_volume,
+                    tets);
+      require_memory(context, tets * kBytesPerTet, asked);
+    }
     options.keep_surface = parameters.get_bool("keep-surface");
     options.sliver_passes = static_cast<int>(parameters.get_int("sliver-passes"));
     options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");

@@ -68,7 +68,9 @@ TEST(CliOptions, RunsThatCannotFitInMemoryAreRefusedBeforeTheyStart) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"remesh", model, "--seeds", "200000000", "-o", out},
         {"remesh", model, "--edge-length", "0.0001", "-o", out},
-        {"stats", model, "--ref", model, "--samples", "2000000000"}}) {
+        {"stats", model, "--ref", model, "--samples", "2000000000"},
+        // A unit box under tets of 1e-12 (the bound alone would have TetGen run for hours).
+        {"tetmesh", model, "--max-volume", "1e-12", "-o", dir / "out.mesh"}}) {
     const CliResult r = run_voroseal(args);
     EXPECT_EQ(r.exit_code, 2) << args[2] << ": " << r.err;
     EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;

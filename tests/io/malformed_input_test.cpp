@@ -119,6 +119,9 @@ TEST(MalformedInput, Tsurf) {
        "missing END of the GOCAD PLine"},
       {"no triangles", "GOCAD TSurf 1\nHEADER {name: s}\nVRTX 1 0 0 0\nEND\n", 0, "no triangles"},
       {"empty file", "", 0, "no triangles"},
+      // A binary tail is refused after 1 MiB of its first line, not after reading all of it.
+      {"line over 1 MiB", head(kTsurf, 5) + std::string((1 << 20) + 1, '\0'), 6,
+       "line longer than 1 MiB"},
   };
   for (const Broken& b : cases) expect_rejected(".ts", b, false);
 }
@@ -303,7 +306,8 @@ const std::string kVtu =
 
 TEST(MalformedInput, Vtu) {
   const std::vector<Broken> cases = {
-      {"truncated", head(kVtu, 20), 20, "truncated: no </VTKFile>"},
+      {"truncated", head(kVtu, 20), 2, "not closed by </VTKFile> at the end of the file"},
+      {"padded with zeros", head(kVtu, 20) + std::string(5000, '\0'), 2, "(truncated?)"},
       {"nan point", replace(kVtu, 7, "0 0 nan 1 0 0 0 1 0"), 7, "finite number"},
       {"word in points", replace(kVtu, 7, "0 0 0 1 0 0 0 1 zero"), 7, "'zero'"},
       {"points not by three", replace(kVtu, 7, "0 0 0 1 0 0 0 1"), 6, "not a multiple of 3"},

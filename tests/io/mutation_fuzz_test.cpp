@@ -141,7 +141,8 @@ void fuzz(const std::string& format, const std::vector<std::vector<std::string>>
   // The unmodified seeds must be valid.
   for (const auto& files : seeds) {
     std::vector<TextSource> sources;
-    for (size_t k = 0; k < files.size(); ++k) sources.push_back({format + std::to_string(k), files[k]});
+    for (size_t k = 0; k < files.size(); ++k)
+      sources.emplace_back(format + std::to_string(k), files[k]);
     ASSERT_NO_THROW(read(sources)) << format;
   }
   for (int it = 0; it < iterations; ++it) {
@@ -149,7 +150,8 @@ void fuzz(const std::string& format, const std::vector<std::vector<std::string>>
     const size_t target = choose() % files.size();
     std::vector<TextSource> sources;
     for (size_t k = 0; k < files.size(); ++k)
-      sources.push_back({format + std::to_string(k), k == target ? mutator.mutate(files[k]) : files[k]});
+      sources.emplace_back(format + std::to_string(k),
+                           k == target ? mutator.mutate(files[k]) : files[k]);
     try {
       read(sources);
       ++accepted;
@@ -158,7 +160,7 @@ void fuzz(const std::string& format, const std::vector<std::vector<std::string>>
     } catch (const std::exception& e) {
       ADD_FAILURE() << format << " iteration " << it << ": " << typeid(e).name() << ": " << e.what()
                     << "\n--- input ---\n"
-                    << sources[target].text.substr(0, 2000);
+                    << sources[target].text().substr(0, 2000);
       return;
     }
   }

@@ -1,11 +1,15 @@
 // Writers never overwrite inputs of the run, never leave partial or temporary files.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 
 #include "framework/core/error.h"
+#include "framework/core/signal_cleanup.h"
 #include "io/atomic_file.h"
 #include "io/model_io.h"
 #include "tests/io/io_test_util.h"
@@ -109,6 +113,45 @@ TEST(Writers, FailureWhileWritingKeepsTheOldTargetAndRemovesTheTemporary) {
     AtomicFile file(dir.file("never.txt"), {});
     file.stream() << "data";
   }
+  EXPECT_EQ(dir.listing(), std::vector<std::string>{"out.txt"});
+}
+
+// The fallback where the file system has no O_TMPFILE: a named `.NAME.tmp-XXXXXX` that is
+// renamed on commit, removed when dropped, and removed by the signal handler.
+TEST(Writers, NamedTemporaryIsRenamedOnCommitAndRemovedOtherwise) {
+  using Temporary = AtomicFile::Temporary;
+  test::ScratchDir dir;
+  {
+    AtomicFile file(dir.file("out.txt"), {}, Temporary::named);
+    EXPECT_FALSE(file.unnamed());
+    file.stream() << "new\n";
+    const std::vector<std::string> during = dir.listing();
+    ASSERT_EQ(during.size(), 1u);
+    EXPECT_EQ(during[0].rfind(".out.txt.tmp-", 0), 0u) << during[0];
+    file.commit();
+  }
+  EXPECT_EQ(dir.listing(), std::vector<std::string>{"out.txt"});
+  EXPECT_EQ(test::read_text(dir.file("out.txt")), "new\n");
+  {
+    AtomicFile dropped(dir.file("dropped.txt"), {}, Temporary::named);
+    dropped.stream() << "data";
+  }
+  EXPECT_EQ(dir.listing(), std::vector<std::string>{"out.txt"});
+
+  // SIGTERM while the temporary is open: the handler removes it and exits with 143.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    install_signal_cleanup();
+    AtomicFile file(dir.file("killed.txt"), {}, Temporary::named);
+    file.stream() << "partial" << std::flush;
+    ::raise(SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
   EXPECT_EQ(dir.listing(), std::vector<std::string>{"out.txt"});
 }
 

@@ -21,7 +21,7 @@ namespace {
 
 using namespace voroseal;
 
-void build(const SurfaceSoup& soup) {
+[[maybe_unused]] void build(const SurfaceSoup& soup) {
   try {
     build_model(soup);
   } catch (const ModelError&) {
