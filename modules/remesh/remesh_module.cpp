@@ -20,6 +20,7 @@
 #include "modules/check/model_validity.h"
 #include "modules/remesh/cleanup_report_json.h"
 #include "modules/remesh/remesh.h"
+#include "modules/remesh/remesh_verdict.h"
 
 namespace voroseal {
 
@@ -79,82 +80,16 @@ ValidityReport written_verdict(const std::string& text, const std::string& path,
   }
 }
 
-/// Free borders of the remesh on parts whose input part has none: holes the remesh made, even
-/// where `check` would take them for fault tips (an input sealed there says they are not).
-CheckEntry holes_made(const StructuralModel& input, const StructuralModel& output,
-                      const std::vector<int>& input_part_of_output) {
-  CheckEntry entry;
-  entry.name = "holes_made";
-  std::vector<char> bordered(input.parts.size(), 0);
-  for (const Contact& c : input.contacts)
-    if (c.is_free_border())
-      for (int p : c.parts) bordered[p] = 1;
-  for (const Contact& c : output.contacts) {
-    if (!c.is_free_border()) continue;
-    bool hole = false;
-    for (int p : c.parts) {
-      const int q = p < static_cast<int>(input_part_of_output.size()) ? input_part_of_output[p] : -1;
-      hole = hole || (q >= 0 && !bordered[q]);
-    }
-    if (!hole) continue;
-    entry.count += static_cast<long>(c.vertices.size()) - 1;
-    if (entry.examples.size() < static_cast<size_t>(kPlacesRefined))
-      entry.examples.push_back({"free border of " + std::to_string(c.vertices.size() - 1) +
-                                    " edges on a surface sealed in the input",
-                                output.vertices[c.vertices.front()] + output.frame.origin,
-                                {}});
-  }
-  entry.message = entry.count == 0 ? "no free border the input does not have"
-                                   : std::to_string(entry.count) +
-                                         " free border edges on surfaces sealed in the input";
-  return entry;
-}
-
-/// "surface", "contact" or "corner": the report's and the log's name of a feature's kind.
-const char* feature_kind(VertexFeature::Kind kind) {
-  return kind == VertexFeature::Surface   ? "surface"
-         : kind == VertexFeature::Contact ? "contact"
-         : kind == VertexFeature::Corner  ? "corner"
-                                          : "unknown";
-}
-
-/// With --keep-topology the user asked for every input feature: an input surface part, contact,
-/// corner, region or pair of touching regions without its counterpart is a defect, refined
-/// where it lies (the features' places) like an invalid remesh, and refused if it stays.
-CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& topology) {
-  CheckEntry entry;
-  entry.name = "topology_kept";
-  const FeatureAudit& audit = topology.features;
-  entry.count = static_cast<long>(audit.lost.size() + audit.regions_lost.size() +
-                                  audit.region_contacts_lost.size());
-  for (const LostFeature& f : audit.lost) {
-    if (entry.examples.size() >= static_cast<size_t>(kPlacesRefined)) break;
-    entry.examples.push_back({std::string("input ") + feature_kind(f.kind) + " " +
-                                  std::to_string(f.id) + " without a counterpart",
-                              f.location + input.frame.origin,
-                              {}});
-  }
-  entry.message = entry.count == 0
-                      ? "every input surface part, contact, corner and region kept"
-                      : std::to_string(audit.lost.size()) + " surface parts, contacts or corners, " +
-                            std::to_string(audit.regions_lost.size()) + " regions and " +
-                            std::to_string(audit.region_contacts_lost.size()) +
-                            " region contacts of the input without a counterpart";
-  return entry;
-}
-
 /// The verdict on a remesh: `voroseal check`'s on the model as written (cracks show only when
-/// the file is read back), plus the holes it made and, with --keep-topology, the input features
-/// it lost; `text` is the file to write at `out`.
+/// the file is read back), plus the holes and pockets it made and, with --keep-topology, the
+/// input features it lost; `text` is the file to write at `out`.
 struct Judgement {
   std::string text;
   ValidityReport verdict;
   std::shared_ptr<const StructuralModel> written;  // the output as read back from `text`
-  long regions_gained = 0;
-  /// What the refinement of an invalid remesh removes: the failed checks' counts and the
-  /// regions gained (pockets left).
+  /// What the refinement of an invalid remesh removes: the failed checks' counts.
   long defects() const {
-    long n = regions_gained;
+    long n = 0;
     for (const CheckEntry& c : verdict.checks)
       if (c.severity == Severity::Error) n += c.count;
     return n;
@@ -172,21 +107,21 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
   } else {
     j.verdict = check_model(result.model, options);
   }
-  j.verdict.checks.push_back(holes_made(input, result.model, result.topology.input_part_of_output));
-  if (keep_topology) j.verdict.checks.push_back(topology_kept(input, result.topology));
-  j.regions_gained = static_cast<long>(result.topology.regions_gained.size());
+  j.verdict.checks.push_back(
+      holes_made(input, result.model, result.topology.input_part_of_output, kPlacesRefined));
+  j.verdict.checks.push_back(no_region_gained(input, result.topology, kPlacesRefined));
+  if (keep_topology)
+    j.verdict.checks.push_back(topology_kept(input, result.topology, kPlacesRefined));
   return j;
 }
 
-/// Where an invalid remesh is refined: the failed checks' places and the pockets left, in the
+/// Where an invalid remesh is refined: the failed checks' places (pockets included), in the
 /// model's local frame.
-std::vector<Vec3> places_to_refine(const Judgement& j, const TopologyReport& topology,
-                                   const Frame& frame) {
+std::vector<Vec3> places_to_refine(const Judgement& j, const Frame& frame) {
   std::vector<Vec3> places;
   for (const CheckEntry& c : j.verdict.checks)
     if (c.severity == Severity::Error && !c.passed())
       for (const CheckExample& e : c.examples) places.push_back(e.location - frame.origin);
-  for (const GainedRegion& g : topology.regions_gained) places.push_back(g.location);
   return places;
 }
 
@@ -403,7 +338,7 @@ class RemeshModule final : public Module {
     const size_t seeds_before_repair = result.seeds.seeds.size();
     {
       SeedOptimizationResult last = result.seeds;
-      std::vector<Vec3> places = places_to_refine(judgement, result.topology, input.frame);
+      std::vector<Vec3> places = places_to_refine(judgement, input.frame);
       BallRefinementOptions repair = remesh_options.refinement;
       repair.min_size = result.min_feature;
       // --no-cleanup asks for the raw dual: judged, not refined.
@@ -424,7 +359,7 @@ class RemeshModule final : public Module {
         context.log.info("remesh: refined " + std::to_string(places.size()) +
                          " places where the remesh was invalid (" + std::to_string(added) +
                          " seeds added): " + std::to_string(defects) + " defects left");
-        places = places_to_refine(j, next.topology, input.frame);
+        places = places_to_refine(j, input.frame);
         if (defects < judgement.defects()) {
           result = std::move(next);
           judgement = std::move(j);
@@ -553,7 +488,7 @@ class RemeshModule final : public Module {
       }
       context.log.error(
           "remesh: the remeshed model is not valid (what `voroseal check` finds, holes the "
-          "input has not" +
+          "input has not, pockets" +
           std::string(keep_topology ? ", input features without a counterpart" : "") +
           "): " + defects_text(verdict) + kept);
     }
