@@ -72,11 +72,12 @@ int space_contacts(Editor& e, const SurfaceProjector& projector, double shorter_
       // Corners stay, and so do the pinned vertices that are not bends (zips, tips).
       const VertexFeature& fu = e.mesh().features[u];
       if (fu.kind != VertexFeature::Contact || (fu.pinned && !e.is_bend(u))) continue;
-      // Bends are judged below with the spacing's slack, not by collapse_allowed()'s own rule.
-      if (!collapse_allowed(e, u, v, 0.0, bars.collapse_floor_deg, /*repairing=*/true)) continue;
-      // The contact edge left from v to u's other neighbour keeps to the input contact; without
-      // a tolerance nothing says a bend may go.
-      if (e.tolerance() > 0.0 ? !bend_may_go(e, u, v, bars.contact_spacing_slack) : e.is_bend(u))
+      // The contact edge left from v to u's other neighbour keeps to the input contact within
+      // the spacing's slack (bend_may_go(), for any contact vertex); without a tolerance a bend
+      // stays.
+      if (!collapse_allowed(e, u, v, 0.0, bars.collapse_floor_deg, /*repairing=*/false,
+                            bars.contact_spacing_slack) ||
+          (e.tolerance() > 0.0 && !bend_may_go(e, u, v, bars.contact_spacing_slack)))
         continue;
       e.stars({u, v}, around);
       const RingShape before = ring_shape(e, around, {});

@@ -123,11 +123,12 @@ namespace {
 // constrained, along the feature it samples; or, closer than d_min (`merge_below`), a contact
 // vertex joins another contact or a corner, which merges the two features there. A repair
 // (`repairing`) may also move a pinned contact point; a bend goes where its contact keeps to the
-// input without it (bend_may_go()).
-bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, bool repairing = false) {
+// input without it, within `bend_slack` tolerances (bend_may_go()).
+bool feature_allows_collapse(Editor& e, int u, int v, double merge_below, bool repairing,
+                             double bend_slack) {
   const VertexFeature& fu = e.mesh().features[u];
   const VertexFeature& fv = e.mesh().features[v];
-  if (fu.pinned && !repairing && !(e.is_bend(u) && bend_may_go(e, u, v)))
+  if (fu.pinned && !repairing && !(e.is_bend(u) && bend_may_go(e, u, v, bend_slack)))
     return false;
   switch (fu.kind) {
     case VertexFeature::Corner:
@@ -152,8 +153,9 @@ bool feature_allows_collapse(Editor& e, int u, int v, double merge_below = 0.0, 
 
 }  // namespace
 
-bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing) {
-  if (!feature_allows_collapse(e, u, v, merge_below, repairing)) return false;
+bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing,
+                      double bend_slack) {
+  if (!feature_allows_collapse(e, u, v, merge_below, repairing, bend_slack)) return false;
   std::vector<int> edge, nu, nv;
   e.edge_triangles(u, v, edge);
   if (edge.empty()) return false;

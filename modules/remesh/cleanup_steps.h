@@ -43,8 +43,9 @@ int raise_valence3_on_contacts(Editor& e);
 // Whether u may collapse into v: the features allow it, the link condition holds and no
 // triangle folds over or becomes a sliver. No triangle may come out with a smallest angle below
 // min(its angle before, `floor_deg`): a collapse never turns good triangles into needles (which
-// would let collapses cascade).
-bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing);
+// would let collapses cascade). A bend u goes where bend_may_go(e, u, v, `bend_slack`).
+bool collapse_allowed(Editor& e, int u, int v, double merge_below, double floor_deg, bool repairing,
+                      double bend_slack = 1.0);
 
 // The collapse itself: the triangles of edge (u, v) go, u becomes v in the others.
 void collapse(Editor& e, int u, int v);
