@@ -19,10 +19,15 @@ int FeatureAudit::larger_than_resolution() const {
 
 namespace {
 
+// Points a lost region or region contact is refined at, per part: spread over its triangles so
+// that the refinement reaches where the region thins out, wherever that is.
+constexpr int kPlacesPerPart = 8;
+
 struct PartMeasure {
   double width = 0.0;             // 2 × area / perimeter (perimeter: edges with one triangle)
   double area = 0.0;
   Vec3 somewhere = Vec3::Zero();  // centroid of its largest triangle
+  std::vector<Vec3> places;       // centroids of up to kPlacesPerPart triangles, evenly strided
 };
 
 std::vector<PartMeasure> part_measures(const StructuralModel& model) {
@@ -42,7 +47,15 @@ std::vector<PartMeasure> part_measures(const StructuralModel& model) {
     out[part].area += a;
     for (int i = 0; i < 3; ++i) ++edges[part][std::minmax(f[i], f[(i + 1) % 3])];
   }
+  std::vector<std::vector<int>> triangles_of(model.parts.size());
+  for (size_t t = 0; t < mt.triangles.size(); ++t) triangles_of[mt.part[t]].push_back(static_cast<int>(t));
   for (size_t part = 0; part < model.parts.size(); ++part) {
+    const std::vector<int>& own = triangles_of[part];
+    const size_t stride = std::max<size_t>(1, own.size() / kPlacesPerPart);
+    for (size_t k = stride / 2; k < own.size(); k += stride) {
+      const Triangle& f = mt.triangles[static_cast<size_t>(own[k])];
+      out[part].places.push_back((p[f[0]] + p[f[1]] + p[f[2]]) / 3.0);
+    }
     for (const auto& [e, n] : edges[part])
       if (n == 1) perimeter[part] += (p[e.first] - p[e.second]).norm();
     // A closed part (no border) is as wide as its area allows.
@@ -193,15 +206,22 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
     double area = 0.0;
     for (const Side& side : region.sides) area += parts[side.part].area;
     const double volume = std::abs(input.signed_volume(region.sides));
-    audit.regions_lost.push_back({r, area > 0.0 ? 2.0 * volume / area : 0.0});
+    LostRegion lost{r, area > 0.0 ? 2.0 * volume / area : 0.0, {}};
+    for (const Side& side : region.sides)
+      lost.places.insert(lost.places.end(), parts[side.part].places.begin(),
+                         parts[side.part].places.end());
+    audit.regions_lost.push_back(std::move(lost));
   }
   const auto sides = input.part_regions();
   for (const auto& [a, b] : region_contacts_lost) {
-    double width = 0.0;
+    LostRegionContact lost{a, b, 0.0, {}};
     for (size_t part = 0; part < sides.size(); ++part)
-      if ((sides[part].first == a && sides[part].second == b) || (sides[part].first == b && sides[part].second == a))
-        width = std::max(width, parts[part].width);
-    audit.region_contacts_lost.push_back({a, b, width});
+      if ((sides[part].first == a && sides[part].second == b) ||
+          (sides[part].first == b && sides[part].second == a)) {
+        lost.width = std::max(lost.width, parts[part].width);
+        lost.places.insert(lost.places.end(), parts[part].places.begin(), parts[part].places.end());
+      }
+    audit.region_contacts_lost.push_back(std::move(lost));
   }
   return audit;
 }

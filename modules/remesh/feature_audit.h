@@ -29,12 +29,14 @@ struct LostFeature {
 struct LostRegion {
   int region = -1;
   double thickness = 0.0;  // 2 × volume / area of its sides: a layer's thickness (a third of a cube's side)
+  std::vector<Vec3> places;  // points spread over its sides, local frame: where to refine
 };
 
 /// Two input regions that no longer touch.
 struct LostRegionContact {
   int a = -1, b = -1;
   double width = 0.0;  // of the widest input part between them
+  std::vector<Vec3> places;  // points spread over the parts between them, local frame
 };
 
 struct FeatureAudit {

@@ -67,13 +67,25 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
   const FeatureAudit& audit = topology.features;
   entry.count = static_cast<long>(audit.lost.size() + audit.regions_lost.size() +
                                   audit.region_contacts_lost.size());
-  for (const LostFeature& f : audit.lost) {
-    if (entry.examples.size() >= static_cast<size_t>(max_places)) break;
-    entry.examples.push_back({std::string("input ") + feature_kind(f.kind) + " " +
-                                  std::to_string(f.id) + " without a counterpart",
-                              f.location + input.frame.origin,
-                              {}});
-  }
+  auto add = [&](const std::string& what, const Vec3& local) {
+    if (entry.examples.size() < static_cast<size_t>(max_places))
+      entry.examples.push_back({what, local + input.frame.origin, {}});
+  };
+  for (const LostFeature& f : audit.lost)
+    add(std::string("input ") + feature_kind(f.kind) + " " + std::to_string(f.id) +
+            " without a counterpart",
+        f.location);
+  // A region or a region contact is lost somewhere along its extent: all of its places.
+  for (const LostRegion& r : audit.regions_lost)
+    for (const Vec3& x : r.places)
+      add("input region '" + input.regions[static_cast<size_t>(r.region)].name +
+              "' without a counterpart",
+          x);
+  for (const LostRegionContact& c : audit.region_contacts_lost)
+    for (const Vec3& x : c.places)
+      add("input regions '" + input.regions[static_cast<size_t>(c.a)].name + "' and '" +
+              input.regions[static_cast<size_t>(c.b)].name + "' no longer touch",
+          x);
   entry.message = entry.count == 0
                       ? "every input surface part, contact, corner and region kept"
                       : std::to_string(audit.lost.size()) + " surface parts, contacts or corners, " +

@@ -117,6 +117,20 @@ TEST(FeatureAudit, SizesLostRegionsAndRegionContacts) {
   ASSERT_EQ(audit.region_contacts_lost.size(), 1u);
   EXPECT_NEAR(audit.region_contacts_lost[0].width, 0.5, 1e-9);
   EXPECT_EQ(audit.larger_than_resolution(), 1);  // the contact, not the region
+
+  // The places to refine lie on the lost region's sides and on the horizon between the two.
+  const Region& lost = input.regions[0];
+  ASSERT_GE(audit.regions_lost[0].places.size(), lost.sides.size());
+  for (const Vec3& x : audit.regions_lost[0].places) {
+    double nearest = 1e9;
+    for (const Side& side : lost.sides)
+      for (int v : input.parts[side.part].model_vertex)
+        nearest = std::min(nearest, (input.vertices[v] - x).norm());
+    EXPECT_LT(nearest, 0.25) << x.transpose();  // a triangle centroid on a 1/4 lattice
+  }
+  ASSERT_FALSE(audit.region_contacts_lost[0].places.empty());
+  for (const Vec3& x : audit.region_contacts_lost[0].places)
+    EXPECT_NEAR(x.z() + input.frame.origin.z(), 0.5, 1e-9);  // places are in the local frame
 }
 
 TEST(ModelFromRemeshed, ReportsAPocketAsAGainedRegionAndKeepsTheInputRegionsOnTheLargeOnes) {

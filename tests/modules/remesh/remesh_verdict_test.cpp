@@ -75,12 +75,18 @@ TEST(RemeshVerdict, TopologyKeptCountsLostFeaturesRegionsAndRegionContacts) {
   TopologyReport topology;
   EXPECT_TRUE(topology_kept(input, topology, 10).passed());
   topology.features.lost.push_back({VertexFeature::Corner, 3, 0.1, Vec3::Zero()});
-  topology.features.regions_lost.push_back({1, 0.01});
-  topology.features.region_contacts_lost.push_back({0, 1, 0.5});
+  topology.features.regions_lost.push_back({1, 0.01, {Vec3(0, 0, 0), Vec3(1, 0, 0)}});
+  topology.features.region_contacts_lost.push_back({0, 1, 0.5, {Vec3(0, 1, 0)}});
   const CheckEntry kept = topology_kept(input, topology, 10);
   EXPECT_EQ(kept.count, 3);
-  ASSERT_EQ(kept.examples.size(), 1u);
+  // One place for the corner, every place of the region and of the region contact: the repair
+  // rounds refine all along a lost region.
+  ASSERT_EQ(kept.examples.size(), 4u);
   EXPECT_EQ(kept.examples[0].what, "input corner 3 without a counterpart");
+  EXPECT_NE(kept.examples[2].what.find("'" + input.regions[1].name + "'"), std::string::npos);
+  EXPECT_NEAR((kept.examples[2].location - (Vec3(1, 0, 0) + input.frame.origin)).norm(), 0, 1e-9);
+  EXPECT_NE(kept.examples[3].what.find("no longer touch"), std::string::npos);
+  EXPECT_EQ(topology_kept(input, topology, 2).examples.size(), 2u);
 }
 
 }  // namespace
