@@ -39,16 +39,15 @@ struct RemeshOptions {
   /// Refinement until the topological ball property holds (ball_refinement.h) before the mesh
   /// is built; its min_feature is set from cleanup.min_feature. max_rounds 0 only measures.
   BallRefinementOptions refinement;
-  /// No merge at all (--keep-topology): d_min 0, and the refinement goes on, for up to its
-  /// max_rounds (the command line's default: kKeepTopologyRounds), until every failure is
-  /// resolved or its cells would be smaller than the edge length / kKeepTopologyRefinement.
+  /// No merge at all (--keep-topology): d_min 0; the ball refinement, when asked for, goes on
+  /// until every failure is resolved or its cells would be smaller than the edge length /
+  /// kKeepTopologyRefinement. (The command line refines where features are lost instead.)
   bool keep_topology = false;
 };
 
-/// With --keep-topology: cells at most this many times smaller than the asked edge length, and
-/// this many refinement rounds (each halves the cells around a failure).
+/// With --keep-topology: ball refinement cells at most this many times smaller than the asked
+/// edge length.
 constexpr double kKeepTopologyRefinement = 32.0;
-constexpr int kKeepTopologyRounds = 8;
 
 /// Counts of the model's features before and after remeshing.
 struct FeatureCounts {

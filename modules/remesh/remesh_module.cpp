@@ -37,6 +37,10 @@ constexpr int kDefectsNamed = 5;
 // monotonically (a refinement moves the cells next to the places too), and the rounds cost
 // nothing on a remesh that comes out valid (docs/benchmarks.md).
 constexpr int kRepairRounds = 5;
+// With --keep-topology the repair rounds also refine where a feature is lost, the one
+// refinement it needs: the ball refinement everywhere a cell fails adds seeds fourfold per round
+// along thin layers without keeping more (docs/benchmarks.md).
+constexpr int kKeepTopologyRepairRounds = 12;
 // Places of each failed check the refinement of an invalid remesh goes to.
 constexpr int kPlacesRefined = 200;
 
@@ -242,18 +246,19 @@ class RemeshModule final : public Module {
     p.push_back(spec("zip-wedge", ParameterType::Double, 12.0,
                      "with --zip-pinch-outs: zip while the two sides meet at a wedge thinner than this (degrees)",
                      0.1, 90.0));
-    static const std::string refine_rounds_help =
-        "rounds of refinement where a restricted Voronoi cell fails the topological ball "
-        "property by more than d_min (default 0: none, the failures are only counted; with "
-        "--keep-topology " + std::to_string(kKeepTopologyRounds) + ")";
-    p.push_back(spec("refine-rounds", ParameterType::Int, nullptr, refine_rounds_help.c_str(), 0, 20));
+    p.push_back(spec("refine-rounds", ParameterType::Int, BallRefinementOptions{}.max_rounds,
+                     "rounds of refinement where a restricted Voronoi cell fails the topological "
+                     "ball property by more than d_min (0: none, the failures are only counted)",
+                     0, 20));
     p.push_back(spec("refine-iterations", ParameterType::Int, BallRefinementOptions{}.iterations,
                      "optimiser iterations after each refinement round", 0, 1e6));
-    p.push_back(spec("repair-rounds", ParameterType::Int, kRepairRounds,
-                     "rounds of refinement where the remeshed model comes out invalid or closes a "
-                     "pocket: smaller cells around each place, seeds optimised again, mesh built "
-                     "again (0: none)",
-                     0, 20));
+    static const std::string repair_rounds_help =
+        "rounds of refinement where the remeshed model comes out invalid, closes a pocket or "
+        "(--keep-topology) loses a feature: smaller cells around each place, seeds optimised "
+        "again, mesh built again (0: none; default " + std::to_string(kRepairRounds) + ", " +
+        std::to_string(kKeepTopologyRepairRounds) + " with --keep-topology)";
+    p.push_back(spec("repair-rounds", ParameterType::Int, nullptr, repair_rounds_help.c_str(), 0,
+                     40));
     p.push_back(spec("keep-topology", ParameterType::Bool, false,
                      "merge nothing: refine until every surface part, contact, corner and region of the "
                      "input has its counterpart (d_min 0)"));
@@ -309,10 +314,7 @@ class RemeshModule final : public Module {
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
     remesh_options.clean_up = parameters.get_bool("cleanup");
-    remesh_options.refinement.max_rounds =
-        parameters.has("refine-rounds") ? static_cast<int>(parameters.get_int("refine-rounds"))
-        : parameters.get_bool("keep-topology") ? kKeepTopologyRounds
-                                               : BallRefinementOptions{}.max_rounds;
+    remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
     remesh_options.refinement.iterations = static_cast<int>(parameters.get_int("refine-iterations"));
     if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
@@ -342,8 +344,11 @@ class RemeshModule final : public Module {
       BallRefinementOptions repair = remesh_options.refinement;
       repair.min_size = result.min_feature;
       // --no-cleanup asks for the raw dual: judged, not refined.
-      const int rounds =
-          remesh_options.clean_up ? static_cast<int>(parameters.get_int("repair-rounds")) : 0;
+      const int asked = parameters.has("repair-rounds")
+                            ? static_cast<int>(parameters.get_int("repair-rounds"))
+                        : keep_topology ? kKeepTopologyRepairRounds
+                                        : kRepairRounds;
+      const int rounds = remesh_options.clean_up ? asked : 0;
       for (int round = 0; round < rounds && !places.empty(); ++round) {
         const auto t0 = std::chrono::steady_clock::now();
         Progress quiet(false);
