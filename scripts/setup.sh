@@ -11,7 +11,8 @@ required=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   pybind11-dev python3-dev python3-numpy zlib1g-dev
 )
-optional=(libceres-dev)
+# snakemake: runs studies as workflows (docs/studies.md); its test is skipped without it.
+optional=(libceres-dev snakemake)
 
 missing=()
 for p in "${required[@]}" "${optional[@]}"; do

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "framework/core/error.h"
@@ -15,7 +16,11 @@
 #include "framework/host/pipeline.h"
 #include "framework/host/plugin_loader.h"
 #include "framework/host/runner.h"
+#include "framework/host/snakemake_workflow.h"
 #include "framework/host/study_report.h"
+#include "framework/host/study_results.h"
+#include "framework/host/study_shard.h"
+#include "io/atomic_file.h"
 
 namespace voroseal {
 
@@ -102,30 +107,127 @@ struct ModuleCommand {
   std::map<std::string, CLI::Option*> bool_options;
 };
 
+// The options of `voroseal run`.
+struct RunCommand {
+  std::string study, output, shard;
+  bool dry_run = false, no_pictures = false, resume = false;
+  std::vector<int> only;                 // run numbers, from 1
+  std::vector<std::string> emit, merge;  // {"snakemake", DIR}; run folders
+};
+
+// The path of this executable, for the jobs of a workflow.
+std::string executable_path(const char* argv0) {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) return self.string();
+  return std::filesystem::absolute(argv0).lexically_normal().string();
+}
+
+// `voroseal run --merge DIR...`: the runs of several output folders as one summary and report.
+int merge_study_command(const RunCommand& command, bool json, Logger& log) {
+  if (!command.study.empty())
+    throw ParameterError("--merge: takes output folders, not a study file ('" + command.study +
+                         "' given before --merge)");
+  const MergedStudy merged = merge_study_results(command.merge, command.output);
+  write_study_reports(merged.outcome);
+  const StudyOutcome& outcome = merged.outcome;
+  std::string missing;
+  for (const int n : merged.missing) missing += (missing.empty() ? "" : ", ") + std::to_string(n);
+  if (!missing.empty())
+    log.warning("study " + outcome.study.name + ": no result for run " + missing + " (of " +
+                std::to_string(outcome.runs.size() + merged.missing.size()) + ")");
+  log.info("study " + outcome.study.name + ": " + std::to_string(outcome.runs.size()) +
+           " runs merged; report " + outcome.study.output + "/report.html");
+  if (json) std::cout << summary_json(outcome).dump(2) << "\n";
+  return outcome.exit_code() != kExitOk || !merged.missing.empty() ? kExitInvalid : kExitOk;
+}
+
+// `--emit snakemake DIR`: writes DIR/Snakefile.
+int emit_study_command(const RunCommand& command, const Study& study,
+                       const std::vector<StudyRun>& runs, const SnakemakeOptions& options,
+                       Logger& log) {
+  if (command.emit[0] != "snakemake")
+    throw ParameterError("--emit: unknown workflow format '" + command.emit[0] +
+                         "' (known: snakemake)");
+  const std::filesystem::path folder = command.emit[1];
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw OutputError(folder.string() + ": " + error.message());
+  const std::string file = (folder / "Snakefile").string();
+  std::vector<std::string> inputs = study.models;
+  inputs.push_back(options.study);
+  write_atomically(file, inputs,
+                   [&](std::ostream& out) { out << snakefile(study, runs, options); });
+  log.info("wrote " + file + " (" + std::to_string(runs.size()) + " runs): cd " + folder.string() +
+           " && snakemake -j N");
+  return kExitOk;
+}
+
 // `voroseal run STUDY.json`: the study's runs, its summary table and report.
-int run_study_command(const ModuleRegistry& registry, const std::string& file, const std::string& output,
-                      bool dry_run, bool no_pictures, bool json, int threads, Logger& log, Progress& progress) {
+int run_study_command(const ModuleRegistry& registry, const RunCommand& command, bool json,
+                      int threads, double max_memory_bytes, const char* argv0, Logger& log,
+                      Progress& progress) {
   try {
-    Study study = read_study(file);
-    if (!output.empty()) study.output = std::filesystem::absolute(output).lexically_normal().string();
-    if (no_pictures) study.pictures = false;
-    if (dry_run) {
-      const std::vector<StudyRun> runs = expand_study(study);
-      validate_study(registry, study, runs);
+    if (!command.merge.empty()) return merge_study_command(command, json, log);
+    if (command.study.empty())
+      throw ParameterError("run: a study file is required (or --merge FOLDER...)");
+    Study study = read_study(command.study);
+    if (!command.output.empty())
+      study.output = std::filesystem::absolute(command.output).lexically_normal().string();
+    if (command.no_pictures) study.pictures = false;
+    const std::vector<StudyRun> all = expand_study(study);
+    validate_study(registry, study, all);
+
+    StudyOptions options;
+    options.threads = threads;
+    options.max_memory_bytes = max_memory_bytes;
+    options.resume = command.resume;
+    if (!command.shard.empty()) options.runs = shard_runs(all, parse_shard(command.shard));
+    if (!command.only.empty()) {
+      std::set<int> chosen;
+      for (const int n : command.only) {
+        if (n < 1 || n > static_cast<int>(all.size()))
+          throw ParameterError("--only: there is no run " + std::to_string(n) + " (the study has " +
+                               std::to_string(all.size()) + ", numbered from 1)");
+        chosen.insert(n - 1);
+      }
+      options.runs = std::vector<int>(chosen.begin(), chosen.end());
+      // Jobs of one study run side by side: each writes its run folder, --merge the summary.
+      options.reports = false;
+    }
+    std::vector<StudyRun> runs;
+    for (const int index : options.runs.value_or(std::vector<int>())) runs.push_back(all[index]);
+    if (!options.runs) runs = all;
+
+    if (!command.emit.empty()) {
+      SnakemakeOptions workflow;
+      workflow.voroseal = executable_path(argv0);
+      workflow.study = std::filesystem::absolute(command.study).lexically_normal().string();
+      workflow.threads = threads > 0 ? threads : 1;
+      constexpr double kMiB = 1024.0 * 1024.0;
+      if (max_memory_bytes > 0)
+        workflow.mem_mb = static_cast<long>(std::ceil(max_memory_bytes / kMiB));
+      return emit_study_command(command, study, runs, workflow, log);
+    }
+    if (command.dry_run) {
       nlohmann::json list = nlohmann::json::array();
       for (const StudyRun& r : runs)
-        list.push_back({{"run", r.index + 1}, {"model", r.model}, {"directory", r.directory}, {"swept", r.swept}});
+        list.push_back({{"run", r.index + 1},
+                        {"model", r.model},
+                        {"directory", r.directory},
+                        {"swept", r.swept}});
       if (json) {
-        std::cout << nlohmann::json{{"study", study.name}, {"output", study.output}, {"runs", list}}.dump(2) << "\n";
+        std::cout << nlohmann::json{{"study", study.name}, {"output", study.output}, {"runs", list}}
+                         .dump(2)
+                  << "\n";
       } else {
-        std::cout << "study " << study.name << ": " << runs.size() << " runs into " << study.output << "\n";
+        std::cout << "study " << study.name << ": " << runs.size() << " runs into " << study.output
+                  << "\n";
         for (const StudyRun& r : runs)
           std::cout << "  " << r.index + 1 << "  " << r.model_label << "/" << r.key << "\n";
       }
       return kExitOk;
     }
-    StudyOptions options;
-    options.threads = threads;
     const StudyOutcome outcome = run_study(registry, study, options, log, progress);
     if (json) std::cout << summary_json(outcome).dump(2) << "\n";
     return outcome.exit_code();
@@ -166,14 +268,46 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
   CLI::App* list = app.add_subcommand("modules", "list the modules and their parameters");
   list->add_flag("--json", modules_json, "as JSON");
 
-  std::string study_file, study_output;
-  bool dry_run = false, no_pictures = false;
+  RunCommand run_command;
   CLI::App* study = app.add_subcommand("run", "run a study: a pipeline of modules over models with parameter "
                                               "sweeps, a summary table and an HTML report (docs/studies.md)");
-  study->add_option("study", study_file, "study file (.json)")->required();
-  study->add_option("-o,--output", study_output, "output folder (default: the study's \"output\")");
-  study->add_flag("--no-pictures", no_pictures, "do not render a picture of each run");
-  study->add_flag("--dry-run", dry_run, "check the study and list its runs without running them");
+  study->add_option("study", run_command.study, "study file (.json)");
+  study->add_option("-o,--output", run_command.output,
+                    "output folder (default: the study's \"output\")");
+  study->add_flag("--no-pictures", run_command.no_pictures, "do not render a picture of each run");
+  CLI::Option* dry_run = study->add_flag("--dry-run", run_command.dry_run,
+                                         "check the study and list its runs without running them");
+  CLI::Option* shard =
+      study->add_option("--shard", run_command.shard,
+                        "run shard I of N only: the runs numbered I, I+N, I+2N, ... (1 <= I <= N)");
+  shard->type_name("I/N");
+  CLI::Option* only =
+      study->add_option("--only", run_command.only,
+                        "run these runs only (numbers as in the summary, e.g. 3,7); no summary: "
+                        "put the run folders together with --merge");
+  only->delimiter(',')->type_name("N[,N...]")->excludes(shard);
+  CLI::Option* resume = study->add_flag(
+      "--resume", run_command.resume,
+      "keep the runs already complete in the output folder (ok or invalid, outputs present)");
+  CLI::Option* emit = study->add_option(
+      "--emit", run_command.emit,
+      "write a workflow running the study instead: `--emit snakemake DIR` writes DIR/Snakefile");
+  emit->expected(2)
+      ->type_name("FORMAT DIR")
+      ->excludes(shard)
+      ->excludes(only)
+      ->excludes(resume)
+      ->excludes(dry_run);
+  study
+      ->add_option("--merge", run_command.merge,
+                   "one summary and report from the runs in these output folders (shards, jobs)")
+      ->expected(1, -1)
+      ->type_name("DIR...")
+      ->excludes(shard)
+      ->excludes(only)
+      ->excludes(resume)
+      ->excludes(emit)
+      ->excludes(dry_run);
 
   // Reading options shared by every module that reads a model.
   double feature_angle = 0.0, weld_tolerance = 1e-7;
@@ -247,8 +381,8 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
 
   Progress progress(!quiet && stderr_is_terminal());
   if (study->parsed())
-    return run_study_command(registry, study_file, study_output, dry_run, no_pictures, json_output, threads, log,
-                             progress);
+    return run_study_command(registry, run_command, json_output, threads, max_memory_bytes, argv[0],
+                             log, progress);
   Context context(log, progress);
   context.threads = threads;
   context.max_memory_bytes = max_memory_bytes;

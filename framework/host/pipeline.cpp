@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -17,6 +18,8 @@
 #include "framework/core/error.h"
 #include "framework/host/runner.h"
 #include "framework/host/study_report.h"
+#include "framework/host/study_results.h"
+#include "io/atomic_file.h"
 #include "io/model_io.h"
 
 namespace voroseal {
@@ -89,6 +92,23 @@ RenderOptions picture_options(const Parameters& p) {
   o.edges = edges == "always" ? EdgeDrawing::Always : edges == "never" ? EdgeDrawing::Never : EdgeDrawing::Auto;
   o.supersample = static_cast<int>(p.get_int("supersample"));
   return o;
+}
+
+// The picture options as the study file writes them (the inverse of picture_options).
+json picture_document(const RenderOptions& o) {
+  const char* edges = o.edges == EdgeDrawing::Always  ? "always"
+                      : o.edges == EdgeDrawing::Never ? "never"
+                                                      : "auto";
+  return {{"width", o.width},
+          {"height", o.height},
+          {"azimuth", o.azimuth_deg},
+          {"elevation", o.elevation_deg},
+          {"vertical-exaggeration", o.vertical_exaggeration},
+          {"perspective", o.perspective},
+          {"cut-away", o.cut_away},
+          {"colour-by", o.colour_by == ColourBy::Interface ? "interface" : "part"},
+          {"edges", edges},
+          {"supersample", o.supersample}};
 }
 
 std::string resolve(const std::string& base_dir, const std::string& path) {
@@ -192,17 +212,9 @@ bool holds_tets(const std::string& file) {
   return ext == ".node" || ext == ".ele";
 }
 
-void write_json_file(const json& document, const std::string& path) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    if (!out) throw OutputError(path + ": cannot open for writing");
-    out << document.dump(2) << "\n";
-    if (!out) throw OutputError(path + ": write failed");
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw OutputError(path + ": " + error.message());
+void write_json_file(const json& document, const std::string& path,
+                     const std::vector<std::string>& inputs) {
+  write_atomically(path, inputs, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
 }
 
 }  // namespace
@@ -344,6 +356,25 @@ Study read_study(const std::string& path) {
   return parse_study(document, parent.string(), path);
 }
 
+json study_document(const Study& study) {
+  json steps = json::array();
+  for (const StudyStep& s : study.steps)
+    steps.push_back({{"module", s.module}, {"parameters", s.parameters}});
+  json write = json::array();
+  for (const StudyOutput& w : study.write) {
+    if (w.what == StudyOutput::What::Auto)
+      write.push_back(w.file);
+    else
+      write.push_back({{w.what == StudyOutput::What::Model ? "model" : "volume", w.file}});
+  }
+  return {{"name", study.name},
+          {"models", study.models},
+          {"read", study.read},
+          {"steps", steps},
+          {"write", write},
+          {"picture", study.pictures ? picture_document(study.picture) : json(false)}};
+}
+
 // ---- sweep expansion ---------------------------------------------------------------------
 
 std::vector<StudyRun> expand_study(const Study& study) {
@@ -468,6 +499,7 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
 
   Context context(log, progress);
   context.threads = options.threads;
+  context.max_memory_bytes = options.max_memory_bytes;
   context.registry = &registry;  // modules that run other modules (remesh --tetmesh) find them here
   const std::map<std::string, std::string> placeholders = {
       {"study_dir", study.base_dir}, {"model", run.model}, {"run_dir", run.directory}};
@@ -491,7 +523,10 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
     outcome.steps.push_back({module.name()});
   }
 
+  // run.json is written last: a run killed before it has none and is not complete (resume).
+  const std::string run_file = (fs::path(run.directory) / "run.json").string();
   std::error_code error;
+  fs::remove(run_file, error);
   fs::create_directories(run.directory, error);
   if (error) {
     outcome.status = "failed";
@@ -614,7 +649,7 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
   outcome.total_seconds = seconds_since(run_start);
 
   try {
-    write_json_file(run_json(outcome, study), (fs::path(run.directory) / "run.json").string());
+    write_json_file(run_json(outcome, study), run_file, study.models);
   } catch (const std::exception& e) {
     log.error(e.what());
   }
@@ -623,23 +658,38 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
 
 }  // namespace
 
-StudyOutcome run_study(const ModuleRegistry& registry, const Study& study, const StudyOptions& options, Logger& log,
-                       Progress& progress) {
+StudyOutcome run_study(const ModuleRegistry& registry, const Study& study,
+                       const StudyOptions& options, Logger& log, Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<StudyRun> runs = expand_study(study);
-  validate_study(registry, study, runs);
+  const std::vector<StudyRun> all = expand_study(study);
+  validate_study(registry, study, all);
+  std::vector<StudyRun> runs = options.runs ? std::vector<StudyRun>() : all;
+  for (const int index : options.runs.value_or(std::vector<int>())) {
+    if (index < 0 || index >= static_cast<int>(all.size()))
+      throw ParameterError("run " + std::to_string(index + 1) + " does not exist (the study has " +
+                           std::to_string(all.size()) + " runs)");
+    runs.push_back(all[index]);
+  }
   std::error_code error;
   fs::create_directories(study.output, error);
   if (error) throw OutputError(study.output + ": cannot create the study folder: " + error.message());
 
   StudyOutcome outcome;
   outcome.study = study;
-  log.info("study " + study.name + ": " + std::to_string(runs.size()) + " runs into " + study.output);
+  log.info("study " + study.name + ": " + std::to_string(runs.size()) + " of " +
+           std::to_string(all.size()) + " runs into " + study.output);
   for (const StudyRun& run : runs) {
-    std::string title = "[" + std::to_string(run.index + 1) + "/" + std::to_string(runs.size()) + "] " +
-                        run.model_label + " " + run.key;
-    log.info(title);
-    outcome.runs.push_back(execute_run(registry, study, run, options, log, progress));
+    std::string title = "[" + std::to_string(run.index + 1) + "/" + std::to_string(all.size()) +
+                        "] " + run.model_label + " " + run.key;
+    std::optional<RunOutcome> done_before;
+    if (options.resume) done_before = read_complete_run(study, run);
+    if (done_before) {
+      log.info(title + ": complete, skipped (--resume)");
+      outcome.runs.push_back(std::move(*done_before));
+    } else {
+      log.info(title);
+      outcome.runs.push_back(execute_run(registry, study, run, options, log, progress));
+    }
     const RunOutcome& done = outcome.runs.back();
     if (done.status == "failed") ++outcome.failed;
     if (done.status == "invalid") ++outcome.invalid;
@@ -649,10 +699,12 @@ StudyOutcome run_study(const ModuleRegistry& registry, const Study& study, const
   }
   outcome.seconds = seconds_since(start);
   if (options.reports) write_study_reports(outcome);
-  log.info("study " + study.name + ": " + std::to_string(runs.size() - outcome.failed - outcome.invalid) + " ok, " +
-           std::to_string(outcome.invalid) + " invalid, " + std::to_string(outcome.failed) + " failed in " +
-           std::to_string(outcome.seconds).substr(0, 7) + " s; report " +
-           (fs::path(study.output) / "report.html").string());
+  log.info("study " + study.name + ": " +
+           std::to_string(runs.size() - outcome.failed - outcome.invalid) + " ok, " +
+           std::to_string(outcome.invalid) + " invalid, " + std::to_string(outcome.failed) +
+           " failed in " + std::to_string(outcome.seconds).substr(0, 7) + " s" +
+           (options.reports ? "; report " + (fs::path(study.output) / "report.html").string()
+                            : std::string()));
   return outcome;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ Study parse_study(const nlohmann::json& document, const std::string& base_dir, c
 
 /// Reads and parses a study file. \throws InputError (unreadable, not JSON), ParameterError
 Study read_study(const std::string& path);
+
+/// The study as a normalized document (absolute models, the object form of "write", every
+/// picture option), without its output folder: what every run.json records, so that runs of the
+/// same study can be recognized wherever they ran, and parse_study() reads it back.
+nlohmann::json study_document(const Study& study);
 
 /// One combination of the sweep.
 struct StudyRun {
@@ -105,6 +111,12 @@ struct StudyOutcome {
 
 struct StudyOptions {
   int threads = 0;  // Context::threads of every run
+  double max_memory_bytes = 0;  // Context::max_memory_bytes of every run (0: the machine's)
+  /// The runs to do (StudyRun::index), in this order; nullopt: all of them.
+  std::optional<std::vector<int>> runs;
+  /// Takes a run from its run.json instead of running it when that run is complete
+  /// (study_results.h: read_complete_run).
+  bool resume = false;
   /// Writes summary.csv, summary.json and report.html after every run (so a long study can be
   /// watched), and at the end.
   bool reports = true;

@@ -11,6 +11,7 @@
 
 #include "framework/core/error.h"
 #include "framework/geometry/triangle_quality.h"
+#include "io/atomic_file.h"
 
 namespace voroseal {
 
@@ -179,17 +180,10 @@ std::string svg_histogram(const std::string& title, const json& h, const std::st
   return svg.str();
 }
 
-void write_text_file(const std::string& text, const std::string& path) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw OutputError(path + ": cannot open for writing");
-    out << text;
-    if (!out) throw OutputError(path + ": write failed");
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw OutputError(path + ": " + error.message());
+// Atomic, with a temporary of its own: shards sharing an output folder may write at once.
+void write_text_file(const std::string& text, const std::string& path,
+                     const std::vector<std::string>& inputs) {
+  write_atomically(path, inputs, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace
@@ -271,6 +265,8 @@ json run_json(const RunOutcome& outcome, const Study& study) {
   }
   json document = {
       {"study", study.name},
+      {"study_file", study.file.empty() ? std::string() : fs::absolute(study.file).string()},
+      {"definition", study_document(study)},
       {"run", outcome.run.index},
       {"model", outcome.run.model},
       {"model_label", outcome.run.model_label},
@@ -451,7 +447,11 @@ std::string html_report(const StudyOutcome& outcome) {
     html << "<tr><td class=\"text\">write</td><td class=\"text\"></td><td>" << display(json(r.write_seconds))
          << "</td></tr>\n<tr><td class=\"text\">total</td><td class=\"text\"></td><td>"
          << display(json(r.total_seconds)) << "</td></tr>\n</tbody></table>\n<p class=\"meta\">";
-    const std::string folder = (fs::path(r.run.model_label) / r.run.key).generic_string();
+    // The run's folder: in the study's output, or in a shard's when merged (study_results.h).
+    const std::string folder =
+        r.run.directory.empty()
+            ? (fs::path(r.run.model_label) / r.run.key).generic_string()
+            : fs::path(r.run.directory).lexically_relative(study.output).generic_string();
     html << "<a href=\"" << escape_url(folder + "/run.json") << "\">run.json</a>";
     for (const std::string& o : r.outputs)
       html << " &middot; <a href=\"" << escape_url(o) << "\">" << escape_html(fs::path(o).filename().string())
@@ -475,9 +475,10 @@ void write_study_reports(const StudyOutcome& outcome) {
   std::error_code error;
   fs::create_directories(folder, error);
   if (error) throw OutputError(folder.string() + ": " + error.message());
-  write_text_file(summary_csv(outcome), (folder / "summary.csv").string());
-  write_text_file(summary_json(outcome).dump(2) + "\n", (folder / "summary.json").string());
-  write_text_file(html_report(outcome), (folder / "report.html").string());
+  const std::vector<std::string>& inputs = outcome.study.models;
+  write_text_file(summary_csv(outcome), (folder / "summary.csv").string(), inputs);
+  write_text_file(summary_json(outcome).dump(2) + "\n", (folder / "summary.json").string(), inputs);
+  write_text_file(html_report(outcome), (folder / "report.html").string(), inputs);
 }
 
 }  // namespace voroseal
