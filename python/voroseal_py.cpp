@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "framework/core/error.h"
 #include "framework/host/pipeline.h"
@@ -144,18 +145,42 @@ RenderOptions render_options(int width, int height, double azimuth, double eleva
 // ---- a Context with its logger and progress ----------------------------------------------
 
 // What Python's Context holds: the C++ Context refers to a Logger and a Progress it does not own.
+// `progress` is False, True (a display on a terminal) or a callable given each step's events.
 struct Session {
-  Session(Registry r, bool verbose, bool progress_bar, int threads)
+  Session(Registry r, bool verbose, const py::object& progress_arg, int threads)
       : registry(std::move(r)),
         log(verbose ? LogLevel::Info : LogLevel::Warning),
-        progress(progress_bar && stderr_is_terminal()),
+        progress(!PyCallable_Check(progress_arg.ptr()) && progress_arg.cast<bool>() &&
+                         stderr_is_terminal()
+                     ? ProgressDisplay::Terminal
+                     : ProgressDisplay::Off),
         context(log, progress) {
     context.threads = threads;
+    if (PyCallable_Check(progress_arg.ptr())) {
+      callback = progress_arg;
+      progress.set_listener([this](const ProgressEvent& e) { call_back(e); });
+    }
   }
   Registry registry;
   Logger log;
   Progress progress;
   Context context;
+  py::object callback;
+  // The first exception the callback raised: later events are not sent, the run goes on, and
+  // run() raises it at the end (raising through the C++ steps could not stop them cleanly).
+  std::optional<py::error_already_set> callback_error;
+
+  void call_back(const ProgressEvent& e) {
+    if (callback_error) return;
+    py::gil_scoped_acquire gil;
+    try {
+      callback(py::dict(py::arg("step") = e.step, py::arg("detail") = e.detail,
+                        py::arg("done") = e.done, py::arg("total") = e.total,
+                        py::arg("seconds") = e.seconds, py::arg("finished") = e.finished));
+    } catch (py::error_already_set& error) {
+      callback_error.emplace(std::move(error));
+    }
+  }
 
   // Runs a module; returns its report (report[module] when it wrote one, else the whole report).
   py::object run(const std::string& module, const json& parameters) {
@@ -168,6 +193,11 @@ struct Session {
       if (!context.model && registry->get(module).needs_model())
         throw ModelError(module + " needs a model: pass one to Context(model) or run(module, model)");
       run_module(*registry, run, context);
+    }
+    if (callback_error) {
+      py::error_already_set error = std::move(*callback_error);
+      callback_error.reset();
+      throw error;
     }
     return to_python(context.report.contains(module) ? context.report[module] : context.report);
   }
@@ -505,12 +535,16 @@ PYBIND11_MODULE(voroseal, m) {
       m, "Context",
       "The state a chain of modules shares: the current model (remesh replaces it), the volume mesh (tetmesh sets "
       "it) and the reports. The model given is copied: it is never changed.")
-      .def(py::init([registry](std::shared_ptr<StructuralModel> model, int threads, bool verbose, bool progress) {
+      .def(py::init([registry](std::shared_ptr<StructuralModel> model, int threads, bool verbose,
+                               const py::object& progress) {
              auto session = std::make_shared<Session>(registry, verbose, progress, threads);
              set_model(*session, model);
              return session;
            }),
-           py::arg("model") = nullptr, py::arg("threads") = 0, py::arg("verbose") = false, py::arg("progress") = false)
+           py::arg("model") = nullptr, py::arg("threads") = 0, py::arg("verbose") = false,
+           py::arg("progress") = false,
+           "progress: True for a display on a terminal, or a callable given a dict (step, detail, "
+           "done, total, seconds, finished) as each step starts, advances and ends")
       .def(
           "run", [](Session& s, const std::string& module, const py::kwargs& kwargs) {
             return s.run(module, parameters_from(kwargs));
@@ -530,7 +564,7 @@ PYBIND11_MODULE(voroseal, m) {
       "run",
       [registry](const std::string& module, std::shared_ptr<StructuralModel> model, int threads, bool verbose,
                  const py::kwargs& kwargs) {
-        Session session(registry, verbose, false, threads);
+        Session session(registry, verbose, py::bool_(false), threads);
         set_model(session, model);
         return session.run(module, parameters_from(kwargs));
       },

@@ -379,7 +379,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
     }
   }
 
-  Progress progress(!quiet && stderr_is_terminal());
+  Progress progress(progress_display(quiet));
   if (study->parsed())
     return run_study_command(registry, run_command, json_output, threads, max_memory_bytes, argv[0],
                              log, progress);

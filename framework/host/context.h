@@ -14,7 +14,10 @@ namespace voroseal {
 class ModuleRegistry;
 
 struct Context {
-  Context(Logger& logger, Progress& progress) : log(logger), progress(progress) {}
+  /// The logger then keeps its lines off the progress line (Logger::attach).
+  Context(Logger& logger, Progress& progress) : log(logger), progress(progress) {
+    logger.attach(&progress);
+  }
 
   std::string input_path;                       // the model file read, if any
   std::shared_ptr<const StructuralModel> input;  // the model as read (reference for fidelity)

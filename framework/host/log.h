@@ -1,10 +1,11 @@
-// Logging and progress for long steps. Owned by the caller (CLI, pipeline, Python) and passed
-// to modules through the Context: no global logger.
+// Logging, owned by the caller (CLI, pipeline, Python) and passed to modules through the
+// Context: no global logger. progress.h has the display of long steps.
 #pragma once
 
-#include <chrono>
 #include <cstdio>
 #include <string>
+
+#include "framework/host/progress.h"
 
 namespace voroseal {
 
@@ -16,6 +17,9 @@ class Logger {
       : level_(level), out_(out) {}
   LogLevel level() const { return level_; }
   void set_level(LogLevel level) { level_ = level; }
+  /// Messages then clear the progress line first and redraw it after, so that none is glued
+  /// to it. The progress must outlive the logger's use.
+  void attach(Progress* progress) { progress_ = progress; }
 
   /// Errors are always printed, whatever the level.
   void error(const std::string& message) const;
@@ -25,33 +29,10 @@ class Logger {
 
  private:
   void write(LogLevel at, const char* prefix, const std::string& message) const;
+  void print(const char* prefix, const std::string& message) const;
   LogLevel level_;
   std::FILE* out_;
+  Progress* progress_ = nullptr;
 };
-
-/// A progress bar on a terminal (stderr), silent otherwise. Thread-safe `advance`.
-class Progress {
- public:
-  explicit Progress(bool enabled) : enabled_(enabled) {}
-  /// Starts a task of `total` steps (0: unknown).
-  void start(const std::string& task, long total);
-  void advance(long steps = 1);
-  void set(long done);
-  /// Ends the current task; prints a final line with the elapsed time.
-  void finish();
-  bool enabled() const { return enabled_; }
-
- private:
-  void draw(bool final);
-  bool enabled_;
-  std::string task_;
-  long total_ = 0;
-  long done_ = 0;
-  int last_permille_ = -1;
-  std::chrono::steady_clock::time_point started_;
-};
-
-/// True when stderr is a terminal (progress bars make sense).
-bool stderr_is_terminal();
 
 }  // namespace voroseal

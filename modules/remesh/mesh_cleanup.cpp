@@ -2,6 +2,8 @@
 // leaves no more defects than it found, then what the census finds left.
 #include "modules/remesh/mesh_cleanup.h"
 
+#include <optional>
+
 #include "modules/remesh/cleanup_phase.h"
 #include "modules/remesh/cleanup_schedule.h"
 
@@ -10,7 +12,8 @@ namespace voroseal {
 using namespace cleanup;
 
 CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
-                       const SurfaceProjector& projector, const CleanupOptions& options) {
+                       const SurfaceProjector& projector, const CleanupOptions& options,
+                       Progress* progress) {
   CleanupReport report;
   Editor e(surface, input);
   e.set_projector(&projector);
@@ -27,7 +30,10 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
   Violations defects = e.census().count;
   for (const PhaseSpec& phase : cleanup_schedule(options.thresholds)) {
     if (phase.rounds <= 0 || !phase.enabled(context)) continue;
+    std::optional<ProgressStep> step;
+    if (progress) step.emplace(*progress, phase.name);
     report.phases.push_back(run_phase(e, phase, context, defects, report));
+    if (step) step->finish();
   }
   report.intersections_left = defects.crossings;
   report.holes_left = defects.holes;

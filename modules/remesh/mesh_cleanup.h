@@ -10,6 +10,7 @@
 // the edits of the phases kept, each phase and what is left.
 #pragma once
 
+#include "framework/host/progress.h"
 #include "framework/model/structural_model.h"
 #include "modules/remesh/cleanup_report.h"
 #include "modules/remesh/cleanup_thresholds.h"
@@ -49,8 +50,8 @@ struct CleanupOptions {
 /// Cleans `surface` in place. Corners never move; contact vertices move along their contact;
 /// surface vertices move tangentially and are projected back on their input part. No edge on a
 /// contact is flipped and a contact edge collapses in every part at once, so a sealed surface
-/// stays sealed.
+/// stays sealed. Each phase is a step of `progress` when one is given.
 CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
-                       const CleanupOptions& options = {});
+                       const CleanupOptions& options = {}, Progress* progress = nullptr);
 
 }  // namespace voroseal

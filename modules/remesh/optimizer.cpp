@@ -205,10 +205,7 @@ class ScaledProblem {
     char line[200];
     std::snprintf(line, sizeof line, "remesh: iteration %3d  F = %.10g  (F_CVT %.6g, F_B %.6g)  |grad F| = %.4g",
                   iteration, f, r.cvt, r.boundary, gnorm);
-    if (progress_.enabled())
-      log_.debug(line);
-    else
-      log_.info(line);
+    log_.debug(line);
   }
 
   SeedObjective& objective_;
@@ -384,7 +381,7 @@ OptimizationRun minimize_seed_energy(SeedObjective& objective, std::vector<Vec3>
     throw ParameterError("remesh: optimizer 'ceres' is not available: voroseal was built without Ceres");
   if (seeds.empty()) throw ParameterError("remesh: no seed to optimise");
   ScaledProblem problem(objective, seeds, options, log, progress);
-  progress.start("remesh: optimising seeds", std::max(0, options.max_iterations));
+  ProgressStep step(progress, "remesh: optimising seeds", std::max(0, options.max_iterations));
   OptimizationRun run;
   switch (options.kind) {
     case OptimizerKind::Lbfgs: run = run_lbfgs(problem, seeds, options); break;
@@ -395,7 +392,7 @@ OptimizationRun minimize_seed_energy(SeedObjective& objective, std::vector<Vec3>
 #endif
       break;
   }
-  progress.finish();
+  step.finish();
   run.evaluations = objective.evaluations();
   return run;
 }

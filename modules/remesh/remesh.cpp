@@ -154,11 +154,12 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
 }
 
 RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress) {
-  return remesh_from_seeds(input, optimize_seeds(input, options.seeds, log, progress), options, log);
+  return remesh_from_seeds(input, optimize_seeds(input, options.seeds, log, progress), options, log,
+                           progress);
 }
 
 RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationResult seeds,
-                               const RemeshOptions& options, Logger& log) {
+                               const RemeshOptions& options, Logger& log, Progress& progress) {
   RemeshResult result;
   result.seeds = std::move(seeds);
   CleanupOptions cleanup = options.cleanup;
@@ -185,12 +186,16 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   } else {
     refine.min_size = std::max(refine.min_size, cleanup.min_feature);
   }
-  Progress quiet(false);
-  result.refinement =
-      refine_until_ball_property(input, result.seeds, options.seeds, refine, log, quiet);
+  if (refine.max_rounds > 0) {
+    ProgressStep step(progress, "remesh: topological ball refinement", refine.max_rounds);
+    result.refinement =
+        refine_until_ball_property(input, result.seeds, options.seeds, refine, log, progress);
+    step.finish();
+  }
   result.refinement_seconds = seconds_since(t0);
 
   t0 = std::chrono::steady_clock::now();
+  ProgressStep building(progress, "remesh: mesh building");
   const ModelGeometry geometry(input, seed_density());
   RvdOptions rvd_options;
   rvd_options.threads = options.seeds.threads;
@@ -210,6 +215,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   result.min_feature = cleanup.min_feature;
   result.build = build_remeshed_surface(input, geometry, rvd, projector, build);
   result.build_seconds = seconds_since(t0);
+  building.finish();
   log.debug("remesh: " + std::to_string(result.build.cell_components) + " cell components, " +
             std::to_string(result.build.contact_components) + " contact components, " +
             std::to_string(result.build.surface.triangles.size()) + " triangles built");
@@ -219,6 +225,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
 
   t0 = std::chrono::steady_clock::now();
   if (options.clean_up) {
+    ProgressStep step(progress, "remesh: clean-up");
     // The zip (experimental) works inside surfaces the clean-up has not finished repairing, and
     // the last repair can then fail where it succeeds without it (modelA6 with --thin-layers: the
     // zip closed a coincident pair of triangles next to a leak the mesh building had left, and
@@ -226,12 +233,12 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
     // and the more valid result stays.
     const bool zips = cleanup.zip_wedge_deg > 0.0;
     RemeshedSurface built = zips ? result.build.surface : RemeshedSurface{};
-    result.cleanup = clean_up(result.build.surface, input, projector, cleanup);
+    result.cleanup = clean_up(result.build.surface, input, projector, cleanup, &progress);
     const int zipped_edits = result.cleanup.pinch_zips + result.cleanup.pinch_rungs + result.cleanup.pinch_pockets;
     if (zips && zipped_edits > 0 && result.cleanup.invalid_left() > 0) {
       CleanupOptions plain = cleanup;
       plain.zip_wedge_deg = 0.0;
-      CleanupReport without = clean_up(built, input, projector, plain);
+      CleanupReport without = clean_up(built, input, projector, plain, &progress);
       if (without.invalid_left() < result.cleanup.invalid_left()) {
         log.warning("remesh: the pinch-out zip left the surfaces invalid (" +
                     std::to_string(result.cleanup.invalid_left()) + " defects, " +
@@ -245,6 +252,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
         result.build.surface = std::move(built);
       }
     }
+    step.finish();
   }
   result.cleanup_seconds = seconds_since(t0);
 

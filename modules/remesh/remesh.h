@@ -94,9 +94,10 @@ struct RemeshResult {
 RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress);
 
 /// The steps after the seed optimisation, from given optimised seeds (options.seeds is used for
-/// the density and the thread count only).
+/// the density and the thread count only). Its steps (refinement, mesh building, clean-up) are
+/// shown on `progress`.
 RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationResult seeds,
-                               const RemeshOptions& options, Logger& log);
+                               const RemeshOptions& options, Logger& log, Progress& progress);
 
 /// The output model from remeshed surfaces: parts, contacts, corners and regions inferred from
 /// the triangles; part, interface and region names taken from the input. `resolution` is what

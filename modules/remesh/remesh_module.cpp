@@ -330,9 +330,12 @@ class RemeshModule final : public Module {
     const WriteOptions write{{context.input_path}};
     const std::string out =
         parameters.has("output") ? parameters.get_string("output") : std::string();
-    RemeshResult result = remesh_from_seeds(input, std::move(seeds), remesh_options, context.log);
+    RemeshResult result =
+        remesh_from_seeds(input, std::move(seeds), remesh_options, context.log, context.progress);
     const bool keep_topology = remesh_options.keep_topology;
+    ProgressStep judging(context.progress, "remesh: verdict");
     Judgement judgement = judge(input, result, out, write, keep_topology);
+    judging.finish(judgement.verdict.valid() ? "valid" : "not valid");
     // Where the remesh came out invalid or closed a pocket, the dual was not faithful there:
     // smaller cells around each place, the seeds optimised again, the mesh built again. Each
     // round refines the last; the remesh with the fewest defects stays.
@@ -351,12 +354,16 @@ class RemeshModule final : public Module {
       const int rounds = remesh_options.clean_up ? asked : 0;
       for (int round = 0; round < rounds && !places.empty(); ++round) {
         const auto t0 = std::chrono::steady_clock::now();
-        Progress quiet(false);
+        ProgressStep step(context.progress, "remesh: repair round " + std::to_string(round + 1));
         const int added = refine_at_places(input, last, options, places, repair, round,
-                                           context.log, quiet);
-        RemeshResult next = remesh_from_seeds(input, last, remesh_options, context.log);
+                                           context.log, context.progress);
+        RemeshResult next =
+            remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
+        ProgressStep judging_again(context.progress, "remesh: verdict");
         Judgement j = judge(input, next, out, write, keep_topology);
+        judging_again.finish();
         const long defects = j.defects();
+        step.finish(std::to_string(defects) + " defects left");
         repair_rounds.push_back({{"places", places.size()},
                                  {"seeds_added", added},
                                  {"defects", defects},
@@ -673,7 +680,7 @@ class RemeshModule final : public Module {
     for (const auto& [a, b] : t.contacts_gained)
       log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the output, not in the input");
     if (!t.merges.empty())
-      log.info("remesh: " + std::to_string(t.merges.size()) +
+      log.warning("remesh: " + std::to_string(t.merges.size()) +
                " features merged where the resolution is coarser than them (see the JSON report)");
     const int small = static_cast<int>(std::count_if(t.features.lost.begin(), t.features.lost.end(),
                                                      [&](const LostFeature& f) { return f.size < cell; }));
@@ -682,7 +689,7 @@ class RemeshModule final : public Module {
                     "remesh: %d input surfaces, contacts or corners smaller than a cell (%.4g) have no "
                     "counterpart in the output (JSON: topology.features_lost)",
                     small, t.features.resolution);
-      log.info(line);
+      log.warning(line);
     }
     for (const LostFeature& f : t.features.lost) {
       if (f.size < cell) continue;

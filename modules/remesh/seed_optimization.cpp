@@ -19,6 +19,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOptions& options, Logger& log,
                                       Progress& progress) {
   const auto t0 = Clock::now();
+  ProgressStep step(progress, "remesh: seed sampling");
   std::vector<double> density = options.vertex_density;
   if (options.thin_layers && !density.empty())
     throw ParameterError("remesh: a density and the thin-layer sizing exclude each other");
@@ -60,6 +61,7 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   log.info(line);
   std::vector<Vec3> initial = sample_seeds(geometry, n, options.random_seed);
   const double sampling = since(t0);
+  step.finish();
   SeedOptimizationResult result = optimize_seeds(geometry, std::move(initial), options, log, progress);
   result.sampling_seconds = sampling;
   result.vertex_density = std::move(density);

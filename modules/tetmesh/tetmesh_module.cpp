@@ -140,10 +140,10 @@ class TetmeshModule : public Module {
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
 
     const auto start = std::chrono::steady_clock::now();
-    context.progress.start("tetmesh " + model.name, 0);
+    ProgressStep tetgen(context.progress, "tetmesh: TetGen");
     TetmeshRun run;
     auto mesh = std::make_shared<VolumeMesh>(tetrahedralize(model, options, context.log, &run));
-    context.progress.finish();
+    tetgen.finish(std::to_string(mesh->tets.size()) + " tets");
     const VolumeQuality quality = measure_volume(*mesh);
     // The scan measures every tet again: only when some tet is that flat.
     const FlatTets flat = quality.min_dihedral_deg < kFlatTetDeg ? find_nearly_flat_tets(*mesh) : FlatTets{};
@@ -253,7 +253,7 @@ class TetmeshModule : public Module {
       const ContactWedge& w = wedges.front();
       const std::string where = file_point(0.5 * (model.vertices[w.a] + model.vertices[w.b]), model.frame.origin);
       const std::string pair = model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name;
-      context.log.info("tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
+      context.log.warning("tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
                        (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
                        ": no tet mesh keeping the surfaces has a larger minimum dihedral angle (`voroseal check` "
                        "lists the thin wedges)");
@@ -265,7 +265,7 @@ class TetmeshModule : public Module {
         return s >= 0 && s < static_cast<int>(mesh->surface_names.size()) ? mesh->surface_names[s] : std::to_string(s);
       };
       const std::string where = file_point(tet_centre(run.slivers.flattest_layer_tet), mesh->frame.origin);
-      context.log.info("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
+      context.log.warning("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
                        " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
                        name(run.slivers.layer_surfaces[1]) + " at " + where +
                        ", thinner there than its triangles are wide" +
@@ -277,7 +277,9 @@ class TetmeshModule : public Module {
       const std::string path = parameters.get_string("output");
       WriteOptions write;
       write.protected_paths = {context.input_path};
+      ProgressStep writing(context.progress, "tetmesh: writing");
       write_volume_mesh(*mesh, path, write);
+      writing.finish();
       report["output"] = path;
       context.log.info("wrote " + path);
     }

@@ -979,7 +979,7 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     add(info.slivers.needle, "on needle triangles");
     add(info.slivers.surface, "other next to surfaces");
     add(info.slivers.interior, "inside");
-    log.info("tetmesh: " + std::to_string(info.slivers.total()) + " tets below " + number(options.min_dihedral_deg) +
+    log.warning("tetmesh: " + std::to_string(info.slivers.total()) + " tets below " + number(options.min_dihedral_deg) +
              " deg: " + groups);
   }
   if (info.attempts > 1)
