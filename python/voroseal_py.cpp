@@ -533,8 +533,8 @@ PYBIND11_MODULE(voroseal, m) {
 
   py::class_<Session, std::shared_ptr<Session>>(
       m, "Context",
-      "The state a chain of modules shares: the current model (remesh replaces it), the volume mesh (tetmesh sets "
-      "it) and the reports. The model given is copied: it is never changed.")
+      "The state a chain of modules shares: the current model (remesh replaces it), the volume "
+      "mesh (tetmesh sets it) and the reports. The model given is copied: it is never changed.")
       .def(py::init([registry](std::shared_ptr<StructuralModel> model, int threads, bool verbose,
                                const py::object& progress) {
              auto session = std::make_shared<Session>(registry, verbose, progress, threads);
@@ -546,7 +546,8 @@ PYBIND11_MODULE(voroseal, m) {
            "progress: True for a display on a terminal, or a callable given a dict (step, detail, "
            "done, total, seconds, finished) as each step starts, advances and ends")
       .def(
-          "run", [](Session& s, const std::string& module, const py::kwargs& kwargs) {
+          "run",
+          [](Session& s, const std::string& module, const py::kwargs& kwargs) {
             return s.run(module, parameters_from(kwargs));
           },
           py::arg("module"), "runs a module with keyword parameters; returns its report as a dict")
@@ -554,23 +555,28 @@ PYBIND11_MODULE(voroseal, m) {
           "model", [](const Session& s) { return s.context.model; },
           [](Session& s, std::shared_ptr<StructuralModel> m) { set_model(s, m); },
           "the current model (a copy of what was set; modules may replace it)")
-      .def_property_readonly("input", [](const Session& s) { return std::const_pointer_cast<StructuralModel>(s.context.input); })
+      .def_property_readonly("input",
+                             [](const Session& s) {
+                               return std::const_pointer_cast<StructuralModel>(s.context.input);
+                             })
       .def_property_readonly("volume", [](const Session& s) { return s.context.volume; })
       .def_property_readonly("report", [](const Session& s) { return to_python(s.context.report); })
-      .def_property_readonly("exit_code", [](const Session& s) { return s.context.exit_code; },
-                             "non-zero when a step gave a negative verdict (check: the model is invalid)");
+      .def_property_readonly(
+          "exit_code", [](const Session& s) { return s.context.exit_code; },
+          "non-zero when a step gave a negative verdict (check: the model is invalid)");
 
   m.def(
       "run",
-      [registry](const std::string& module, std::shared_ptr<StructuralModel> model, int threads, bool verbose,
-                 const py::kwargs& kwargs) {
+      [registry](const std::string& module, std::shared_ptr<StructuralModel> model, int threads,
+                 bool verbose, const py::kwargs& kwargs) {
         Session session(registry, verbose, py::bool_(false), threads);
         set_model(session, model);
         return session.run(module, parameters_from(kwargs));
       },
-      py::arg("module"), py::arg("model") = nullptr, py::kw_only(), py::arg("threads") = 0, py::arg("verbose") = false,
-      "runs one module on a copy of the model; returns the module's report as a dict. Use Context to keep the "
-      "model a module makes (remesh) or the volume mesh (tetmesh).");
+      py::arg("module"), py::arg("model") = nullptr, py::kw_only(), py::arg("threads") = 0,
+      py::arg("verbose") = false,
+      "runs one module on a copy of the model; returns the module's report as a dict. Use Context "
+      "to keep the model a module makes (remesh) or the volume mesh (tetmesh).");
 
   m.def(
       "run_study",

@@ -7,7 +7,9 @@ void Logger::write(LogLevel at, const char* prefix, const std::string& message) 
   print(prefix, message);
 }
 
-void Logger::error(const std::string& message) const { print("error: ", message); }
+void Logger::error(const std::string& message) const {
+  print("error: ", message);
+}
 
 void Logger::print(const char* prefix, const std::string& message) const {
   if (progress_) progress_->clear_line();

@@ -35,7 +35,9 @@ std::string format_count(long done, long total) {
 
 }  // namespace
 
-bool stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
+bool stderr_is_terminal() {
+  return isatty(STDERR_FILENO) != 0;
+}
 
 ProgressDisplay progress_display(bool quiet) {
   if (quiet) return ProgressDisplay::Off;

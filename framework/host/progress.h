@@ -91,8 +91,7 @@ class Progress {
 /// leaves the scope first, so that the steps after it do not nest in it.
 class ProgressStep {
  public:
-  ProgressStep(Progress& progress, const std::string& step, long total = 0)
-      : progress_(progress) {
+  ProgressStep(Progress& progress, const std::string& step, long total = 0) : progress_(progress) {
     progress_.start(step, total);
   }
   ~ProgressStep() {

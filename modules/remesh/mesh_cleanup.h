@@ -51,7 +51,8 @@ struct CleanupOptions {
 /// surface vertices move tangentially and are projected back on their input part. No edge on a
 /// contact is flipped and a contact edge collapses in every part at once, so a sealed surface
 /// stays sealed. Each phase is a step of `progress` when one is given.
-CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input, const SurfaceProjector& projector,
-                       const CleanupOptions& options = {}, Progress* progress = nullptr);
+CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
+                       const SurfaceProjector& projector, const CleanupOptions& options = {},
+                       Progress* progress = nullptr);
 
 }  // namespace voroseal

@@ -355,8 +355,8 @@ class RemeshModule final : public Module {
       for (int round = 0; round < rounds && !places.empty(); ++round) {
         const auto t0 = std::chrono::steady_clock::now();
         ProgressStep step(context.progress, "remesh: repair round " + std::to_string(round + 1));
-        const int added = refine_at_places(input, last, options, places, repair, round,
-                                           context.log, context.progress);
+        const int added = refine_at_places(input, last, options, places, repair, round, context.log,
+                                           context.progress);
         RemeshResult next =
             remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
         ProgressStep judging_again(context.progress, "remesh: verdict");
@@ -680,8 +680,9 @@ class RemeshModule final : public Module {
     for (const auto& [a, b] : t.contacts_gained)
       log.warning("remesh: regions " + name(a) + " and " + name(b) + " touch in the output, not in the input");
     if (!t.merges.empty())
-      log.warning("remesh: " + std::to_string(t.merges.size()) +
-               " features merged where the resolution is coarser than them (see the JSON report)");
+      log.warning(
+          "remesh: " + std::to_string(t.merges.size()) +
+          " features merged where the resolution is coarser than them (see the JSON report)");
     const int small = static_cast<int>(std::count_if(t.features.lost.begin(), t.features.lost.end(),
                                                      [&](const LostFeature& f) { return f.size < cell; }));
     if (small > 0) {

@@ -253,10 +253,11 @@ class TetmeshModule : public Module {
       const ContactWedge& w = wedges.front();
       const std::string where = file_point(0.5 * (model.vertices[w.a] + model.vertices[w.b]), model.frame.origin);
       const std::string pair = model.parts[w.lower_part].name + " and " + model.parts[w.upper_part].name;
-      context.log.warning("tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
-                       (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " + where +
-                       ": no tet mesh keeping the surfaces has a larger minimum dihedral angle (`voroseal check` "
-                       "lists the thin wedges)");
+      context.log.warning(
+          "tetmesh: surfaces " + pair + " meet at " + std::to_string(w.angle_deg) + " deg" +
+          (w.region >= 0 ? " inside " + model.regions[w.region].name : std::string()) + " at " +
+          where + ": no tet mesh keeping the surfaces has a larger minimum dihedral angle " +
+          "(`voroseal check` lists the thin wedges)");
     }
     // The flattest tets across a layer: where the surface mesh is too coarse for the layer.
     if (run.slivers.flattest_layer_tet >= 0 && run.slivers.layer.min_dihedral_deg < options.min_dihedral_deg &&
@@ -265,13 +266,14 @@ class TetmeshModule : public Module {
         return s >= 0 && s < static_cast<int>(mesh->surface_names.size()) ? mesh->surface_names[s] : std::to_string(s);
       };
       const std::string where = file_point(tet_centre(run.slivers.flattest_layer_tet), mesh->frame.origin);
-      context.log.warning("tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
-                       " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) + " and " +
-                       name(run.slivers.layer_surfaces[1]) + " at " + where +
-                       ", thinner there than its triangles are wide" +
-                       (run.surface_rounds > 0 ? " even after the surface bisection" : std::string()) +
-                       ": remesh with `--thin-layers --zip-pinch-outs` (finer cells on thin layers, pinch-outs "
-                       "thinner than d_min closed) or a smaller --edge-length");
+      context.log.warning(
+          "tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
+          " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) +
+          " and " + name(run.slivers.layer_surfaces[1]) + " at " + where +
+          ", thinner there than its triangles are wide" +
+          (run.surface_rounds > 0 ? " even after the surface bisection" : std::string()) +
+          ": remesh with `--thin-layers --zip-pinch-outs` (finer cells on thin layers, pinch-outs "
+          "thinner than d_min closed) or a smaller --edge-length");
     }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");

@@ -979,8 +979,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     add(info.slivers.needle, "on needle triangles");
     add(info.slivers.surface, "other next to surfaces");
     add(info.slivers.interior, "inside");
-    log.warning("tetmesh: " + std::to_string(info.slivers.total()) + " tets below " + number(options.min_dihedral_deg) +
-             " deg: " + groups);
+    log.warning("tetmesh: " + std::to_string(info.slivers.total()) + " tets below " +
+                number(options.min_dihedral_deg) + " deg: " + groups);
   }
   if (info.attempts > 1)
     log.info("tetmesh: TetGen needed " + std::to_string(info.attempts) + " attempts (facet orders) on model '" +

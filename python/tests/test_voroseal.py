@@ -147,6 +147,29 @@ class ModuleTest(unittest.TestCase):
         # The caller's model is not changed.
         self.assertEqual(self.model.num_triangles, 6393)
 
+    def test_progress_reaches_a_callback_step_by_step(self):
+        events = []
+        ctx = voroseal.Context(self.model, progress=events.append)
+        ctx.run("remesh", seeds=1000, iterations=5)
+        steps = [e["step"] for e in events]
+        self.assertIn("remesh: optimising seeds", steps)
+        # Every step that starts finishes: its last event is its end.
+        last = {}
+        for e in events:
+            last[(e["step"], e["detail"])] = e
+        self.assertTrue(all(e["finished"] for e in last.values()))
+        for e in events:
+            self.assertGreaterEqual(e["seconds"], 0.0)
+            if e["total"] > 0:
+                self.assertLessEqual(e["done"], e["total"])
+
+    def test_an_exception_in_the_progress_callback_is_raised_after_the_run(self):
+        def fail(event):
+            raise ValueError("stop here")
+        ctx = voroseal.Context(self.model, progress=fail)
+        with self.assertRaisesRegex(ValueError, "stop here"):
+            ctx.run("remesh", seeds=1000, iterations=3)
+
     def test_errors_are_python_exceptions(self):
         with self.assertRaises(voroseal.ParameterError):
             voroseal.run("tetmesh", self.model, quality=-1)
