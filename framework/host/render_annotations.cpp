@@ -114,7 +114,7 @@ void draw_axes_and_scale(Image& image, const ViewScale& view) {
     const int x1 = image.width - margin, x0 = x1 - bar, y = image.height - margin - size;
     const int text_x = (x0 + x1 - text_width(label, size)) / 2, text_y = y - 11 * size;
     veil(image, std::min(x0, text_x) - 3 * size, text_y - 3 * size, x1 + 3 * size, y + 5 * size);
-    draw_line(image, x0, y, x1, y, size / 2 + 0, ink);
+    draw_line(image, x0, y, x1, y, size / 2, ink);
     draw_line(image, x0, y - 3 * size, x0, y + 2 * size, 0, ink);
     draw_line(image, x1, y - 3 * size, x1, y + 2 * size, 0, ink);
     draw_text(image, text_x, text_y, label, ink, size);
@@ -124,8 +124,9 @@ void draw_axes_and_scale(Image& image, const ViewScale& view) {
   double longest = 0;
   for (const auto& a : view.axes) longest = std::max(longest, std::hypot(a[0], a[1]));
   if (!(longest > 0)) return;
+  // The origin in the middle of a box that holds any axis and its letter.
   const double reach = kAxisLength * image.width / longest;
-  const int box = static_cast<int>(std::ceil(kAxisLength * image.width)) + 9 * size;
+  const int box = 2 * (static_cast<int>(std::ceil(kAxisLength * image.width)) + 9 * size);
   const double ox = margin + box / 2.0, oy = image.height - margin - box / 2.0;
   veil(image, margin, image.height - margin - box, margin + box, image.height - margin);
   const std::array<uint8_t, 3> colours[3] = {{{200, 40, 40}}, {{30, 140, 50}}, {{40, 70, 200}}};
