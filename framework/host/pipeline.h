@@ -33,8 +33,8 @@ struct Study {
   std::string name;
   std::string file;      // the study file ("" when built in code)
   std::string base_dir;  // relative model paths resolve here (the study file's folder)
-  std::string
-      output;  // output folder, absolute (a relative one is taken from the working directory)
+  // Output folder, absolute (a relative one is taken from the working directory).
+  std::string output;
   std::vector<std::string> models;                 // model files, resolved against base_dir
   nlohmann::json read = nlohmann::json::object();  // reading options; a list value is swept
   std::vector<StudyStep> steps;
@@ -85,13 +85,13 @@ void validate_study(const ModuleRegistry& registry, const Study& study,
 
 struct StepOutcome {
   std::string module;
-  std::string status =
-      "skipped";  // ok, invalid (the step gave a non-zero verdict), failed, skipped
+  // ok, invalid (the step gave a non-zero verdict), failed, skipped
+  std::string status = "skipped";
   int exit_code = 0;
   double seconds = 0;
   std::string error;
-  std::string
-      text;  // what the step printed on stdout, a file relative to the study output ("" if nothing)
+  // What the step printed on stdout: a file relative to the study output ("" if nothing).
+  std::string text;
 };
 
 struct RunOutcome {
