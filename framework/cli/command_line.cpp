@@ -274,7 +274,8 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
   study->add_option("study", run_command.study, "study file (.json)");
   study->add_option("-o,--output", run_command.output,
                     "output folder (default: the study's \"output\")");
-  study->add_flag("--no-pictures", run_command.no_pictures, "do not render a picture of each run");
+  study->add_flag("--no-pictures", run_command.no_pictures,
+                  "do not render the pictures of each run (surfaces, tet cut)");
   CLI::Option* dry_run = study->add_flag("--dry-run", run_command.dry_run,
                                          "check the study and list its runs without running them");
   CLI::Option* shard =

@@ -19,6 +19,7 @@
 #include "framework/host/runner.h"
 #include "framework/host/study_report.h"
 #include "framework/host/study_results.h"
+#include "framework/host/volume_cut.h"
 #include "io/atomic_file.h"
 #include "io/model_io.h"
 
@@ -37,7 +38,8 @@ std::vector<ParameterSpec> read_specs() {
                       "split a surface where it folds more than this (degrees)"};
   angle.min = 0.0;
   angle.max = 180.0;
-  ParameterSpec weld{"weld-tolerance", ParameterType::Double, 1e-7, "welding distance relative to the bbox diagonal"};
+  ParameterSpec weld{"weld-tolerance", ParameterType::Double, 1e-7,
+                     "welding distance relative to the bbox diagonal"};
   weld.min = 0.0;
   weld.max = 0.1;
   ParameterSpec corner{"corner-rule", ParameterType::Choice, "incidence", "corner placement rule"};
@@ -49,7 +51,8 @@ ReadOptions read_options(const Parameters& p) {
   ReadOptions options;
   options.build.feature_angle_deg = p.get_double("feature-angle");
   options.build.weld_tolerance = p.get_double("weld-tolerance");
-  options.build.corner_rule = p.get_string("corner-rule") == "signature" ? CornerRule::Signature : CornerRule::Incidence;
+  options.build.corner_rule =
+      p.get_string("corner-rule") == "signature" ? CornerRule::Signature : CornerRule::Incidence;
   return options;
 }
 
@@ -60,11 +63,14 @@ std::vector<ParameterSpec> picture_specs() {
   width.min = 16, width.max = 8192;
   ParameterSpec height{"height", ParameterType::Int, d.height, "picture height in pixels"};
   height.min = 16, height.max = 8192;
-  ParameterSpec azimuth{"azimuth", ParameterType::Double, d.azimuth_deg, "viewer azimuth, degrees from north"};
+  ParameterSpec azimuth{"azimuth", ParameterType::Double, d.azimuth_deg,
+                        "viewer azimuth, degrees from north"};
   azimuth.min = -360, azimuth.max = 360;
-  ParameterSpec elevation{"elevation", ParameterType::Double, d.elevation_deg, "viewer elevation, degrees"};
+  ParameterSpec elevation{"elevation", ParameterType::Double, d.elevation_deg,
+                          "viewer elevation, degrees"};
   elevation.min = -90, elevation.max = 90;
-  ParameterSpec exaggeration{"vertical-exaggeration", ParameterType::Double, d.vertical_exaggeration, ""};
+  ParameterSpec exaggeration{"vertical-exaggeration", ParameterType::Double,
+                             d.vertical_exaggeration, ""};
   exaggeration.min = 1e-3;
   exaggeration.max = 1e3;
   ParameterSpec perspective{"perspective", ParameterType::Bool, d.perspective, ""};
@@ -75,7 +81,10 @@ std::vector<ParameterSpec> picture_specs() {
   edges.choices = {"auto", "always", "never"};
   ParameterSpec supersample{"supersample", ParameterType::Int, d.supersample, ""};
   supersample.min = 1, supersample.max = 4;
-  return {width, height, azimuth, elevation, exaggeration, perspective, cut, colour, edges, supersample};
+  // A study's pictures have axes and a scale bar unless asked not to (Study::picture).
+  ParameterSpec axes{"axes", ParameterType::Bool, true, "axes and a scale bar"};
+  return {width, height, azimuth, elevation,   exaggeration, perspective,
+          cut,   colour, edges,   supersample, axes};
 }
 
 RenderOptions picture_options(const Parameters& p) {
@@ -89,8 +98,11 @@ RenderOptions picture_options(const Parameters& p) {
   o.cut_away = p.get_bool("cut-away");
   o.colour_by = p.get_string("colour-by") == "interface" ? ColourBy::Interface : ColourBy::Part;
   const std::string edges = p.get_string("edges");
-  o.edges = edges == "always" ? EdgeDrawing::Always : edges == "never" ? EdgeDrawing::Never : EdgeDrawing::Auto;
+  o.edges = edges == "always"  ? EdgeDrawing::Always
+            : edges == "never" ? EdgeDrawing::Never
+                               : EdgeDrawing::Auto;
   o.supersample = static_cast<int>(p.get_int("supersample"));
+  o.axes_and_scale = p.get_bool("axes");
   return o;
 }
 
@@ -108,7 +120,8 @@ json picture_document(const RenderOptions& o) {
           {"cut-away", o.cut_away},
           {"colour-by", o.colour_by == ColourBy::Interface ? "interface" : "part"},
           {"edges", edges},
-          {"supersample", o.supersample}};
+          {"supersample", o.supersample},
+          {"axes", o.axes_and_scale}};
 }
 
 std::string resolve(const std::string& base_dir, const std::string& path) {
@@ -120,7 +133,8 @@ std::string resolve(const std::string& base_dir, const std::string& path) {
 std::string substitute(std::string text, const std::map<std::string, std::string>& values) {
   for (const auto& [name, value] : values) {
     const std::string token = "{" + name + "}";
-    for (size_t at = text.find(token); at != std::string::npos; at = text.find(token, at + value.size()))
+    for (size_t at = text.find(token); at != std::string::npos;
+         at = text.find(token, at + value.size()))
       text.replace(at, token.size(), value);
   }
   return text;
@@ -130,7 +144,9 @@ std::string substitute(std::string text, const std::map<std::string, std::string
 std::string folder_text(const json& value) {
   std::string text = value.is_string() ? value.get<std::string>() : value.dump();
   for (char& c : text)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '+' && c != '-' && c != '_') c = '-';
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '+' && c != '-' &&
+        c != '_')
+      c = '-';
   return text;
 }
 
@@ -212,6 +228,13 @@ bool holds_tets(const std::string& file) {
   return ext == ".node" || ext == ".ele";
 }
 
+// A colour as CSS writes it: #rrggbb.
+std::string hex_colour(const std::array<uint8_t, 3>& c) {
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
+  return hex;
+}
+
 void write_json_file(const json& document, const std::string& path,
                      const std::vector<std::string>& inputs) {
   write_atomically(path, inputs, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
@@ -227,11 +250,13 @@ Study parse_study(const json& document, const std::string& base_dir, const std::
     return ParameterError(where + ": " + key + ": " + why);
   };
   if (!document.is_object()) throw ParameterError(where + ": a study is a JSON object");
-  static const std::set<std::string> known = {"name", "description", "output", "models", "read",
-                                              "steps", "write", "picture"};
+  static const std::set<std::string> known = {"name", "description", "output", "models",
+                                              "read", "steps",       "write",  "picture"};
   for (const auto& [key, value] : document.items())
     if (!known.count(key))
-      throw fail(key, "unknown key (known: name, description, output, models, read, steps, write, picture)");
+      throw fail(
+          key,
+          "unknown key (known: name, description, output, models, read, steps, write, picture)");
 
   Study study;
   study.file = file;
@@ -273,7 +298,8 @@ Study parse_study(const json& document, const std::string& base_dir, const std::
   }
 
   const json steps = document.value("steps", json());
-  if (!steps.is_array()) throw fail("steps", "expected a list of {\"module\": ..., \"parameters\": {...}}");
+  if (!steps.is_array())
+    throw fail("steps", "expected a list of {\"module\": ..., \"parameters\": {...}}");
   for (size_t i = 0; i < steps.size(); ++i) {
     const json& s = steps[i];
     const std::string key = "steps[" + std::to_string(i) + "]";
@@ -284,7 +310,8 @@ Study parse_study(const json& document, const std::string& base_dir, const std::
     if (!s.is_object() || !s.contains("module") || !s["module"].is_string())
       throw fail(key, "expected {\"module\": name, \"parameters\": {...}}");
     for (const auto& [k, v] : s.items())
-      if (k != "module" && k != "parameters") throw fail(key + "." + k, "unknown key (known: module, parameters)");
+      if (k != "module" && k != "parameters")
+        throw fail(key + "." + k, "unknown key (known: module, parameters)");
     StudyStep step;
     step.module = s["module"].get<std::string>();
     if (s.contains("parameters")) {
@@ -297,7 +324,8 @@ Study parse_study(const json& document, const std::string& base_dir, const std::
   if (document.contains("write")) {
     const json& w = document["write"];
     auto add = [&](const json& f, StudyOutput::What what, const std::string& key) {
-      if (!f.is_string() || f.get<std::string>().empty()) throw fail(key, "expected a file name, got " + f.dump());
+      if (!f.is_string() || f.get<std::string>().empty())
+        throw fail(key, "expected a file name, got " + f.dump());
       study.write.push_back({f.get<std::string>(), what});
     };
     if (w.is_array()) {
@@ -305,8 +333,10 @@ Study parse_study(const json& document, const std::string& base_dir, const std::
         const std::string key = "write[" + std::to_string(i) + "]";
         if (w[i].is_object()) {
           for (const auto& [k, v] : w[i].items()) {
-            if (k != "model" && k != "volume") throw fail(key + "." + k, "expected model or volume");
-            add(v, k == "model" ? StudyOutput::What::Model : StudyOutput::What::Volume, key + "." + k);
+            if (k != "model" && k != "volume")
+              throw fail(key + "." + k, "expected model or volume");
+            add(v, k == "model" ? StudyOutput::What::Model : StudyOutput::What::Volume,
+                key + "." + k);
           }
         } else {
           add(w[i], StudyOutput::What::Auto, key);
@@ -383,13 +413,15 @@ std::vector<StudyRun> expand_study(const Study& study) {
   auto collect = [&](int step, const json& parameters, const std::string& key) {
     for (const auto& [name, value] : parameters.items()) {
       if (!value.is_array()) continue;
-      if (value.empty()) throw ParameterError(where + ": " + key + "." + name + ": an empty list sweeps nothing");
+      if (value.empty())
+        throw ParameterError(where + ": " + key + "." + name + ": an empty list sweeps nothing");
       axes.push_back({step, name, std::vector<json>(value.begin(), value.end()), name});
     }
   };
   collect(-1, study.read, "read");
   for (size_t s = 0; s < study.steps.size(); ++s)
-    collect(static_cast<int>(s), study.steps[s].parameters, "steps[" + std::to_string(s) + "].parameters");
+    collect(static_cast<int>(s), study.steps[s].parameters,
+            "steps[" + std::to_string(s) + "].parameters");
   std::map<std::string, int> uses;
   for (const Axis& a : axes) ++uses[a.parameter];
   for (Axis& a : axes)
@@ -436,7 +468,8 @@ std::vector<StudyRun> expand_study(const Study& study) {
         json& target = axes[a].step < 0 ? run.read : run.step_parameters[axes[a].step];
         target[axes[a].parameter] = value;
         run.swept[axes[a].label] = value;
-        key += (key.empty() ? "" : "_") + folder_text(json(axes[a].label)) + "=" + folder_text(value);
+        key +=
+            (key.empty() ? "" : "_") + folder_text(json(axes[a].label)) + "=" + folder_text(value);
       }
       if (key.empty()) key = "default";
       if (key.size() > 120) key = key.substr(0, 120);
@@ -451,7 +484,8 @@ std::vector<StudyRun> expand_study(const Study& study) {
   return runs;
 }
 
-void validate_study(const ModuleRegistry& registry, const Study& study, const std::vector<StudyRun>& runs) {
+void validate_study(const ModuleRegistry& registry, const Study& study,
+                    const std::vector<StudyRun>& runs) {
   const std::string where = study.file.empty() ? std::string("study") : study.file;
   for (size_t s = 0; s < study.steps.size(); ++s)
     if (registry.find(study.steps[s].module) == nullptr) {
@@ -472,7 +506,8 @@ void validate_study(const ModuleRegistry& registry, const Study& study, const st
       try {
         Parameters(module.parameters(), run.step_parameters[s]);
       } catch (const ParameterError& e) {
-        throw ParameterError(where + ": steps[" + std::to_string(s) + "] (" + module.name() + "): " + e.what());
+        throw ParameterError(where + ": steps[" + std::to_string(s) + "] (" + module.name() +
+                             "): " + e.what());
       }
     }
   }
@@ -488,7 +523,9 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
   const auto run_start = std::chrono::steady_clock::now();
   RunOutcome outcome;
   outcome.run = run;
-  auto relative = [&](const std::string& path) { return fs::relative(path, study.output).generic_string(); };
+  auto relative = [&](const std::string& path) {
+    return fs::relative(path, study.output).generic_string();
+  };
   auto fail = [&](const std::string& stage) {
     const auto [code, message] = describe_current_exception();
     outcome.status = "failed";
@@ -514,12 +551,14 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
     json values = run.step_parameters[s];
     // Path parameters: placeholders, then relative to the run's folder (outputs land there).
     for (const ParameterSpec& spec : module.parameters())
-      if (spec.type == ParameterType::Path && values.contains(spec.name) && values[spec.name].is_string()) {
+      if (spec.type == ParameterType::Path && values.contains(spec.name) &&
+          values[spec.name].is_string()) {
         const std::string path = substitute(values[spec.name].get<std::string>(), placeholders);
         values[spec.name] = resolve(run.directory, path);
       }
     step_parameters.emplace_back(module.parameters(), values);
-    outcome.parameters["steps"].push_back({{"module", module.name()}, {"parameters", step_parameters.back().json()}});
+    outcome.parameters["steps"].push_back(
+        {{"module", module.name()}, {"parameters", step_parameters.back().json()}});
     outcome.steps.push_back({module.name()});
   }
 
@@ -556,7 +595,8 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
     const int verdict_before = context.exit_code;
     context.exit_code = 0;
     const std::string text_file =
-        (fs::path(run.directory) / ("step" + std::to_string(s + 1) + "-" + module.name() + ".txt")).string();
+        (fs::path(run.directory) / ("step" + std::to_string(s + 1) + "-" + module.name() + ".txt"))
+            .string();
     start = std::chrono::steady_clock::now();
     try {
       const StdoutToFile capture(text_file);
@@ -577,7 +617,8 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
     else if (fs::exists(text_file, size_error))
       step.text = relative(text_file);
     context.exit_code = std::max(verdict_before, context.exit_code);
-    log.info("  " + module.name() + " " + step.status + " (" + std::to_string(step.seconds).substr(0, 6) + " s)");
+    log.info("  " + module.name() + " " + step.status + " (" +
+             std::to_string(step.seconds).substr(0, 6) + " s)");
   }
   if (outcome.status != "failed" && context.exit_code != 0) {
     outcome.status = "invalid";
@@ -604,10 +645,12 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
     for (const StudyOutput& out : study.write) {
       const std::string path = resolve(run.directory, substitute(out.file, placeholders));
       try {
-        const bool volume = out.what == StudyOutput::What::Volume ||
-                            (out.what == StudyOutput::What::Auto && context.volume && holds_tets(path));
+        const bool volume =
+            out.what == StudyOutput::What::Volume ||
+            (out.what == StudyOutput::What::Auto && context.volume && holds_tets(path));
         if (volume) {
-          if (!context.volume) throw OutputError(path + ": the run made no volume mesh (add a tetmesh step)");
+          if (!context.volume)
+            throw OutputError(path + ": the run made no volume mesh (add a tetmesh step)");
           write_volume_mesh(*context.volume, path, write);
         } else {
           write_model(*context.model, path, write);
@@ -635,14 +678,34 @@ RunOutcome execute_run(const ModuleRegistry& registry, const Study& study, const
       const bool by_part = study.picture.colour_by == ColourBy::Part;
       const size_t n = by_part ? model.parts.size() : model.interfaces.size();
       for (size_t i = 0; i < n; ++i) {
-        const auto c = surface_colour(static_cast<int>(i));
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c[0], c[1], c[2]);
-        outcome.legend.push_back({{"name", by_part ? model.parts[i].name : model.interfaces[i].name}, {"colour", hex}});
+        outcome.legend.push_back(
+            {{"name", by_part ? model.parts[i].name : model.interfaces[i].name},
+             {"colour", hex_colour(surface_colour(static_cast<int>(i)))}});
       }
     } catch (const std::exception& e) {
       progress.finish();
       log.warning(std::string("picture: ") + e.what());
+    }
+  }
+  // The tet mesh cut in two, from the same viewpoint, coloured by region.
+  if (study.pictures && read_ok && context.volume && !context.volume->tets.empty()) {
+    try {
+      const std::string path = (fs::path(run.directory) / "cut.png").string();
+      progress.start("picture of the tets", 0);
+      write_png(render_volume_cut(*context.volume, study.picture), path);
+      progress.finish();
+      outcome.cut_picture = relative(path);
+      const std::vector<std::string>& names = context.volume->region_names;
+      std::set<int> regions(context.volume->tet_region.begin(), context.volume->tet_region.end());
+      for (const int region : regions)
+        outcome.region_legend.push_back(
+            {{"name", region >= 0 && region < static_cast<int>(names.size())
+                          ? names[region]
+                          : "region " + std::to_string(region)},
+             {"colour", hex_colour(surface_colour(region))}});
+    } catch (const std::exception& e) {
+      progress.finish();
+      log.warning(std::string("picture of the tets: ") + e.what());
     }
   }
   outcome.picture_seconds = seconds_since(start);
@@ -672,7 +735,8 @@ StudyOutcome run_study(const ModuleRegistry& registry, const Study& study,
   }
   std::error_code error;
   fs::create_directories(study.output, error);
-  if (error) throw OutputError(study.output + ": cannot create the study folder: " + error.message());
+  if (error)
+    throw OutputError(study.output + ": cannot create the study folder: " + error.message());
 
   StudyOutcome outcome;
   outcome.study = study;

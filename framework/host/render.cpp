@@ -9,6 +9,7 @@
 
 #include "framework/core/edge_key.h"
 #include "framework/core/error.h"
+#include "framework/host/render_annotations.h"
 
 namespace voroseal {
 
@@ -22,14 +23,28 @@ std::array<uint8_t, 3> hsv_to_rgb(double h, double s, double v) {
   const double p = v * (1 - s), q = v * (1 - f * s), t = v * (1 - (1 - f) * s);
   double r = v, g = t, b = p;
   switch (static_cast<int>(i) % 6) {
-    case 0: r = v, g = t, b = p; break;
-    case 1: r = q, g = v, b = p; break;
-    case 2: r = p, g = v, b = t; break;
-    case 3: r = p, g = q, b = v; break;
-    case 4: r = t, g = p, b = v; break;
-    case 5: r = v, g = p, b = q; break;
+    case 0:
+      r = v, g = t, b = p;
+      break;
+    case 1:
+      r = q, g = v, b = p;
+      break;
+    case 2:
+      r = p, g = v, b = t;
+      break;
+    case 3:
+      r = p, g = q, b = v;
+      break;
+    case 4:
+      r = t, g = p, b = v;
+      break;
+    case 5:
+      r = v, g = p, b = q;
+      break;
   }
-  auto byte = [](double c) { return static_cast<uint8_t>(std::clamp(std::lround(255.0 * c), 0L, 255L)); };
+  auto byte = [](double c) {
+    return static_cast<uint8_t>(std::clamp(std::lround(255.0 * c), 0L, 255L));
+  };
   return {byte(r), byte(g), byte(b)};
 }
 
@@ -80,6 +95,34 @@ std::array<uint8_t, 3> surface_colour(int index) {
 }
 
 Image render_model(const StructuralModel& model, const RenderOptions& options) {
+  TriangleScene scene;
+  scene.vertices = model.vertices;
+  scene.frame = model.bbox();
+  ModelTriangles flat = flatten(model);
+  scene.triangles = std::move(flat.triangles);
+  scene.colours.resize(scene.triangles.size());
+  for (size_t t = 0; t < scene.triangles.size(); ++t) {
+    const int part = flat.part[t];
+    const int id = options.colour_by == ColourBy::Part ? part : model.parts[part].interface;
+    scene.colours[t] = surface_colour(id);
+  }
+  if (options.contacts && !model.contacts.empty()) {
+    std::unordered_set<uint64_t> contact_edges;
+    for (const Contact& contact : model.contacts)
+      for (size_t i = 1; i < contact.vertices.size(); ++i)
+        contact_edges.insert(edge_key(contact.vertices[i - 1], contact.vertices[i]));
+    scene.lines.assign(scene.triangles.size(), 0);
+    for (size_t t = 0; t < scene.triangles.size(); ++t) {
+      const Triangle& tri = scene.triangles[t];
+      for (int i = 0; i < 3; ++i)
+        if (contact_edges.count(edge_key(tri[(i + 1) % 3], tri[(i + 2) % 3])))
+          scene.lines[t] |= static_cast<uint8_t>(1u << i);
+    }
+  }
+  return render_scene(scene, options);
+}
+
+Image render_scene(const TriangleScene& scene, const RenderOptions& options) {
   if (options.width < 16 || options.width > 8192 || options.height < 16 || options.height > 8192)
     throw ParameterError("picture size must be between 16 and 8192 pixels");
   if (options.supersample < 1 || options.supersample > 4)
@@ -93,8 +136,8 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
   std::vector<std::array<uint8_t, 3>> colour(static_cast<size_t>(W) * H, options.background);
   std::vector<float> zbuffer(static_cast<size_t>(W) * H, -std::numeric_limits<float>::infinity());
 
-  const BoundingBox box = model.bbox();
-  if (box.empty() || model.num_triangles() == 0) {
+  const BoundingBox& box = scene.frame;
+  if (box.empty() || scene.triangles.empty()) {
     image.rgb.resize(3 * static_cast<size_t>(image.width) * image.height);
     for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = options.background[i % 3];
     return image;
@@ -104,12 +147,14 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
   const double az = options.azimuth_deg * kPi / 180.0, el = options.elevation_deg * kPi / 180.0;
   camera.centre = box.center();
   camera.exaggeration = options.vertical_exaggeration;
-  camera.eye_direction = Vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
+  camera.eye_direction =
+      Vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el));
   camera.right = Vec3(-std::cos(az), std::sin(az), 0.0);
   camera.up = Vec3(-std::sin(el) * std::sin(az), -std::sin(el) * std::cos(az), std::cos(el));
   camera.perspective = options.perspective;
   const Vec3 extent = box.max - box.min;
-  const double diagonal = Vec3(extent.x(), extent.y(), extent.z() * options.vertical_exaggeration).norm();
+  const double diagonal =
+      Vec3(extent.x(), extent.y(), extent.z() * options.vertical_exaggeration).norm();
   const double half_fov = std::clamp(options.field_of_view_deg, 5.0, 120.0) * kPi / 360.0;
   camera.distance = 0.5 * diagonal / std::tan(half_fov) + 0.5 * diagonal;
 
@@ -122,7 +167,8 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
     fx0 = std::min(fx0, p.x()), fx1 = std::max(fx1, p.x());
     fy0 = std::min(fy0, p.y()), fy1 = std::max(fy1, p.y());
   }
-  const double scale = 0.92 * std::min(W / std::max(fx1 - fx0, 1e-300), H / std::max(fy1 - fy0, 1e-300));
+  const double scale =
+      0.92 * std::min(W / std::max(fx1 - fx0, 1e-300), H / std::max(fy1 - fy0, 1e-300));
   const double ox = 0.5 * W - scale * 0.5 * (fx0 + fx1);
   const double oy = 0.5 * H + scale * 0.5 * (fy0 + fy1);
 
@@ -149,23 +195,16 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
     return false;
   };
 
-  std::unordered_set<uint64_t> contact_edges;
-  if (options.contacts)
-    for (const Contact& contact : model.contacts)
-      for (size_t i = 1; i < contact.vertices.size(); ++i)
-        contact_edges.insert(edge_key(contact.vertices[i - 1], contact.vertices[i]));
-
-  const ModelTriangles flat = flatten(model);
-  const long n = static_cast<long>(flat.triangles.size());
+  const long n = static_cast<long>(scene.triangles.size());
   std::vector<ScreenTriangle> screen(n);
   std::vector<char> visible(n, 0);
   std::vector<double> edge_pixels(n, 0.0);
 #pragma omp parallel for schedule(static)
   for (long t = 0; t < n; ++t) {
-    const Triangle& tri = flat.triangles[t];
-    const Vec3& a = model.vertices[tri[0]];
-    const Vec3& b = model.vertices[tri[1]];
-    const Vec3& c = model.vertices[tri[2]];
+    const Triangle& tri = scene.triangles[t];
+    const Vec3& a = scene.vertices[tri[0]];
+    const Vec3& b = scene.vertices[tri[1]];
+    const Vec3& c = scene.vertices[tri[2]];
     if (on_cut_side(a, b, c)) continue;
     ScreenTriangle& s = screen[t];
     const Vec3 corners[3] = {a, b, c};
@@ -175,13 +214,15 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
       s.y[i] = static_cast<float>(oy - scale * p.y());
       s.depth[i] = static_cast<float>(p.z());
     }
-    int model_vertex[3] = {tri[0], tri[1], tri[2]};
+    // Bit i of `lines`: the edge opposite corner i; a swap of corners 1 and 2 swaps bits 1, 2.
+    uint8_t lines = scene.lines.empty() ? 0 : scene.lines[t];
     float area = edge_function(s.x[0], s.y[0], s.x[1], s.y[1], s.x[2], s.y[2]);
     if (area < 0) {  // make the screen orientation consistent
       std::swap(s.x[1], s.x[2]), std::swap(s.y[1], s.y[2]), std::swap(s.depth[1], s.depth[2]);
-      std::swap(model_vertex[1], model_vertex[2]);
+      lines = static_cast<uint8_t>((lines & 1u) | ((lines & 2u) << 1) | ((lines & 4u) >> 1));
       area = -area;
     }
+    s.contact_edges = lines;
     if (!(area > 1e-6f)) continue;  // seen edge-on
     double perimeter = 0;
     for (int i = 0; i < 3; ++i) {
@@ -189,20 +230,20 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
       const float length = std::hypot(s.x[k] - s.x[j], s.y[k] - s.y[j]);
       perimeter += length;
       s.inv_length[i] = length > 0 ? 1.0f / length : 0.0f;
-      if (!contact_edges.empty() && contact_edges.count(edge_key(model_vertex[j], model_vertex[k])))
-        s.contact_edges |= static_cast<uint8_t>(1u << i);
     }
     edge_pixels[t] = perimeter / 3.0 / ss;
-    const Vec3 normal = (camera.world(b) - camera.world(a)).cross(camera.world(c) - camera.world(a));
+    const Vec3 normal =
+        (camera.world(b) - camera.world(a)).cross(camera.world(c) - camera.world(a));
     const double norm = normal.norm();
     const double lambert = norm > 0 ? std::abs(normal.dot(light)) / norm : 0.0;
     const double shade = 0.38 + 0.62 * lambert;
-    const int id = options.colour_by == ColourBy::Part ? flat.part[t] : model.parts[flat.part[t]].interface;
-    const std::array<uint8_t, 3> base = surface_colour(id);
-    for (int i = 0; i < 3; ++i) s.colour[i] = static_cast<uint8_t>(std::min(255.0, base[i] * shade));
+    const std::array<uint8_t, 3>& base = scene.colours[t];
+    for (int i = 0; i < 3; ++i)
+      s.colour[i] = static_cast<uint8_t>(std::min(255.0, base[i] * shade));
     s.ymin = std::max(0, static_cast<int>(std::floor(std::min({s.y[0], s.y[1], s.y[2]}))));
     s.ymax = std::min(H - 1, static_cast<int>(std::ceil(std::max({s.y[0], s.y[1], s.y[2]}))));
-    const float xmin = std::min({s.x[0], s.x[1], s.x[2]}), xmax = std::max({s.x[0], s.x[1], s.x[2]});
+    const float xmin = std::min({s.x[0], s.x[1], s.x[2]}),
+                xmax = std::max({s.x[0], s.x[1], s.x[2]});
     visible[t] = s.ymin <= s.ymax && xmax >= 0 && xmin <= W;
   }
 
@@ -230,7 +271,8 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
       const float area = edge_function(s.x[0], s.y[0], s.x[1], s.y[1], s.x[2], s.y[2]);
       const float inv_area = 1.0f / area;
       const int xa = std::max(0, static_cast<int>(std::floor(std::min({s.x[0], s.x[1], s.x[2]}))));
-      const int xb = std::min(W - 1, static_cast<int>(std::ceil(std::max({s.x[0], s.x[1], s.x[2]}))));
+      const int xb =
+          std::min(W - 1, static_cast<int>(std::ceil(std::max({s.x[0], s.x[1], s.x[2]}))));
       const int ya = std::max(y0, s.ymin), yb = std::min(y1 - 1, s.ymax);
       for (int py = ya; py <= yb; ++py) {
         const float cy = py + 0.5f;
@@ -275,6 +317,18 @@ Image render_model(const StructuralModel& model, const RenderOptions& options) {
       uint8_t* out = &image.rgb[3 * (static_cast<size_t>(y) * image.width + x)];
       for (int k = 0; k < 3; ++k) out[k] = static_cast<uint8_t>((sum[k] + samples / 2) / samples);
     }
+  if (options.axes_and_scale) {
+    // Pixels per unit at the centre; the axes as the camera sees them (z exaggerated).
+    ViewScale view;
+    view.pixels_per_unit = scale / ss;
+    for (int k = 0; k < 3; ++k) {
+      Vec3 unit = Vec3::Zero();
+      unit[k] = k == 2 ? options.vertical_exaggeration : 1.0;
+      view.axes[k] = {{unit.dot(camera.right) * view.pixels_per_unit,
+                       -unit.dot(camera.up) * view.pixels_per_unit}};
+    }
+    draw_axes_and_scale(image, view);
+  }
   return image;
 }
 
@@ -309,7 +363,8 @@ std::vector<uint8_t> encode_png(const Image& image) {
   std::vector<uint8_t> header;
   for (uint32_t v : {static_cast<uint32_t>(image.width), static_cast<uint32_t>(image.height)})
     for (int shift = 24; shift >= 0; shift -= 8) header.push_back(static_cast<uint8_t>(v >> shift));
-  header.insert(header.end(), {8, 2, 0, 0, 0});  // 8-bit, truecolour, deflate, no filter, no interlace
+  header.insert(header.end(),
+                {8, 2, 0, 0, 0});  // 8-bit, truecolour, deflate, no filter, no interlace
   chunk("IHDR", header);
   chunk("IDAT", packed);
   chunk("IEND", {});

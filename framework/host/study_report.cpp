@@ -1,16 +1,19 @@
 #include "framework/host/study_report.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "framework/core/error.h"
 #include "framework/geometry/triangle_quality.h"
+#include "framework/geometry/volume_quality.h"
+#include "framework/host/html_text.h"
+#include "framework/host/report_charts.h"
 #include "io/atomic_file.h"
 
 namespace voroseal {
@@ -20,9 +23,9 @@ using nlohmann::json;
 
 const std::vector<std::string>& summary_measure_keys() {
   static const std::vector<std::string> keys = {
-      "vertices",    "triangles",  "surfaces",     "contacts",
-      "corners",     "regions",    "min_angle_deg", "pct_triangles_angle_below_30",
-      "avg_quality", "min_quality", "area",         "bbox_diagonal",
+      "vertices",     "triangles",   "surfaces",      "contacts",
+      "corners",      "regions",     "min_angle_deg", "pct_triangles_angle_below_30",
+      "avg_quality",  "min_quality", "area",          "bbox_diagonal",
       "hausdorff_pct"};
   return keys;
 }
@@ -50,37 +53,6 @@ const json* stats_value(const json& stats, const std::string& key) {
   return nullptr;
 }
 
-std::string escape_html(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// Percent-encodes what is not safe in a relative URL path (keeps '/').
-std::string escape_url(const std::string& path) {
-  std::string out;
-  for (unsigned char c : path) {
-    if (std::isalnum(c) || c == '/' || c == '.' || c == '-' || c == '_' || c == '=' || c == '~') {
-      out += static_cast<char>(c);
-    } else {
-      char buffer[4];
-      std::snprintf(buffer, sizeof buffer, "%%%02X", c);
-      out += buffer;
-    }
-  }
-  return out;
-}
-
 // A number for people: integers as is, others with 4 significant digits.
 std::string display(const json& value) {
   if (value.is_null()) return "";
@@ -96,7 +68,9 @@ std::string display(const json& value) {
 
 // The cell of a CSV file (RFC 4180).
 std::string csv_cell(const json& value) {
-  std::string text = value.is_null() ? "" : value.is_string() ? value.get<std::string>() : value.dump();
+  std::string text = value.is_null()     ? ""
+                     : value.is_string() ? value.get<std::string>()
+                                         : value.dump();
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -110,7 +84,8 @@ std::vector<std::string> step_time_columns(const Study& study) {
   std::vector<std::string> columns;
   for (const StudyStep& s : study.steps) {
     const int k = ++seen[s.module];
-    columns.push_back("time_" + s.module + (count[s.module] > 1 ? "_" + std::to_string(k) : "") + "_s");
+    columns.push_back("time_" + s.module + (count[s.module] > 1 ? "_" + std::to_string(k) : "") +
+                      "_s");
   }
   return columns;
 }
@@ -128,57 +103,14 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 // from remesh's topology report, whether the regions and their adjacency were kept, how many
 // input features have no counterpart (all / larger than a Voronoi cell), how many pockets are
 // left (output regions that are no input region) and how many were opened again.
-const std::vector<std::string> kStepColumns = {
-    "tets", "min_dihedral_deg", "thinnest_wedge_deg", "regions_preserved", "features_lost",
-    "features_lost_larger_than_cell", "pockets", "pockets_opened"};
-
-// An inline SVG bar chart of a histogram.
-std::string svg_histogram(const std::string& title, const json& h, const std::string& colour,
-                          const std::string& x_label) {
-  if (!h.is_object() || !h.contains("counts")) return "";
-  const std::vector<long> counts = h["counts"].get<std::vector<long>>();
-  const double lo = h["lo"].get<double>(), hi = h["hi"].get<double>();
-  long peak = 1, total = 0;
-  for (long c : counts) peak = std::max(peak, c), total += c;
-  const int width = 320, height = 170, left = 44, right = 10, top = 22, bottom = 34;
-  const double plot_w = width - left - right, plot_h = height - top - bottom;
-  const double bar_w = plot_w / std::max<size_t>(counts.size(), 1);
-  std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"histogram\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" role=\"img\" aria-label=\"" << escape_html(title)
-      << "\">\n";
-  svg << "<text x=\"" << left << "\" y=\"14\" class=\"title\">" << escape_html(title) << "</text>\n";
-  svg << "<line x1=\"" << left << "\" y1=\"" << top + plot_h << "\" x2=\"" << left + plot_w << "\" y2=\""
-      << top + plot_h << "\" class=\"axis\"/>\n";
-  svg << "<line x1=\"" << left << "\" y1=\"" << top << "\" x2=\"" << left << "\" y2=\"" << top + plot_h
-      << "\" class=\"axis\"/>\n";
-  for (size_t b = 0; b < counts.size(); ++b) {
-    const double bar_h = plot_h * counts[b] / peak;
-    const double x = left + b * bar_w, y = top + plot_h - bar_h;
-    const double from = lo + (hi - lo) * b / counts.size(), to = lo + (hi - lo) * (b + 1) / counts.size();
-    char tip[96];
-    std::snprintf(tip, sizeof tip, "[%.3g, %.3g): %ld triangles (%.1f%%)", from, to, counts[b],
-                  total > 0 ? 100.0 * counts[b] / total : 0.0);
-    svg << "<rect x=\"" << x + 0.5 << "\" y=\"" << y << "\" width=\"" << std::max(bar_w - 1.0, 0.5)
-        << "\" height=\"" << bar_h << "\" fill=\"" << colour << "\"><title>" << tip << "</title></rect>\n";
-  }
-  char lo_text[32], mid_text[32], hi_text[32];
-  std::snprintf(lo_text, sizeof lo_text, "%g", lo);
-  std::snprintf(mid_text, sizeof mid_text, "%g", 0.5 * (lo + hi));
-  std::snprintf(hi_text, sizeof hi_text, "%g", hi);
-  const double base = top + plot_h + 13;
-  svg << "<text x=\"" << left << "\" y=\"" << base << "\" text-anchor=\"middle\">" << lo_text << "</text>\n";
-  svg << "<text x=\"" << left + plot_w / 2 << "\" y=\"" << base << "\" text-anchor=\"middle\">" << mid_text
-      << "</text>\n";
-  svg << "<text x=\"" << left + plot_w << "\" y=\"" << base << "\" text-anchor=\"middle\">" << hi_text
-      << "</text>\n";
-  svg << "<text x=\"" << left + plot_w / 2 << "\" y=\"" << height - 4 << "\" text-anchor=\"middle\">"
-      << escape_html(x_label) << "</text>\n";
-  svg << "<text x=\"" << left - 4 << "\" y=\"" << top + 4 << "\" text-anchor=\"end\">" << peak << "</text>\n";
-  svg << "<text x=\"" << left - 4 << "\" y=\"" << top + plot_h << "\" text-anchor=\"end\">0</text>\n";
-  svg << "</svg>";
-  return svg.str();
-}
+const std::vector<std::string> kStepColumns = {"tets",
+                                               "min_dihedral_deg",
+                                               "thinnest_wedge_deg",
+                                               "regions_preserved",
+                                               "features_lost",
+                                               "features_lost_larger_than_cell",
+                                               "pockets",
+                                               "pockets_opened"};
 
 // Atomic, with a temporary of its own: shards sharing an output folder may write at once.
 void write_text_file(const std::string& text, const std::string& path,
@@ -232,7 +164,8 @@ RunMeasures measure_run(const Context& context) {
     if (t.contains("min_dihedral_deg")) row["min_dihedral_deg"] = t["min_dihedral_deg"];
     if (t.contains("thinnest_wedge_deg")) row["thinnest_wedge_deg"] = t["thinnest_wedge_deg"];
   }
-  if (row["tets"].is_null() && context.volume) row["tets"] = static_cast<long>(context.volume->tets.size());
+  if (row["tets"].is_null() && context.volume)
+    row["tets"] = static_cast<long>(context.volume->tets.size());
   if (context.report.contains("remesh") && context.report["remesh"].is_object() &&
       context.report["remesh"].contains("topology")) {
     const json& t = context.report["remesh"]["topology"];
@@ -252,13 +185,27 @@ RunMeasures measure_run(const Context& context) {
   for (size_t t = 0; t < all.size(); ++t) q[t] = all[t].q, angle[t] = all[t].min_angle_deg;
   measures.histograms["quality"] = histogram(q, 0.0, 1.0, 20);
   measures.histograms["min_angle_deg"] = histogram(angle, 0.0, 60.0, 12);
+  if (context.volume && !context.volume->tets.empty()) {
+    const VolumeMesh& volume = *context.volume;
+    std::vector<double> dihedral;
+    dihedral.reserve(6 * volume.tets.size());
+    for (const Tetrahedron& t : volume.tets) {
+      const auto angles = dihedral_angles_deg(volume.vertices[t[0]], volume.vertices[t[1]],
+                                              volume.vertices[t[2]], volume.vertices[t[3]]);
+      dihedral.insert(dihedral.end(), angles.begin(), angles.end());
+    }
+    measures.histograms["dihedral_deg"] = histogram(dihedral, 0.0, 180.0, 36);
+  }
   return measures;
 }
 
 json run_json(const RunOutcome& outcome, const Study& study) {
   json steps = json::array();
   for (const StepOutcome& s : outcome.steps) {
-    json step = {{"module", s.module}, {"status", s.status}, {"exit_code", s.exit_code}, {"seconds", s.seconds}};
+    json step = {{"module", s.module},
+                 {"status", s.status},
+                 {"exit_code", s.exit_code},
+                 {"seconds", s.seconds}};
     if (!s.error.empty()) step["error"] = s.error;
     if (!s.text.empty()) step["text"] = s.text;
     steps.push_back(step);
@@ -287,6 +234,8 @@ json run_json(const RunOutcome& outcome, const Study& study) {
       {"outputs", outcome.outputs},
       {"picture", outcome.picture.empty() ? json(nullptr) : json(outcome.picture)},
       {"legend", outcome.legend},
+      {"cut_picture", outcome.cut_picture.empty() ? json(nullptr) : json(outcome.cut_picture)},
+      {"region_legend", outcome.region_legend},
       {"report", outcome.report},
   };
   return document;
@@ -321,7 +270,9 @@ json summary_rows(const StudyOutcome& outcome) {
       row[key] = r.measures.contains(key) ? r.measures[key] : json(nullptr);
     row["time_read_s"] = r.read_seconds;
     for (size_t s = 0; s < times.size(); ++s)
-      row[times[s]] = s < r.steps.size() && r.steps[s].status != "skipped" ? json(r.steps[s].seconds) : json(nullptr);
+      row[times[s]] = s < r.steps.size() && r.steps[s].status != "skipped"
+                          ? json(r.steps[s].seconds)
+                          : json(nullptr);
     row["time_write_s"] = r.write_seconds;
     row["time_picture_s"] = r.picture_seconds;
     row["time_total_s"] = r.total_seconds;
@@ -357,6 +308,171 @@ json summary_json(const StudyOutcome& outcome) {
           {"runs", summary_rows(outcome)}};
 }
 
+namespace {
+
+// The columns of the summary a reader looks at first, with their headings; the swept
+// parameters follow the model. The whole summary is behind a toggle below them.
+struct KeyColumn {
+  const char* key;
+  const char* heading;
+};
+const std::vector<KeyColumn> kKeyColumns = {{"status", "status"},
+                                            {"regions_preserved", "regions kept"},
+                                            {"triangles", "triangles"},
+                                            {"tets", "tets"},
+                                            {"avg_quality", "mean Q"},
+                                            {"pct_triangles_angle_below_30", "% tri. &lt; 30&deg;"},
+                                            {"hausdorff_pct", "Hausdorff %"},
+                                            {"min_dihedral_deg", "min dihedral &deg;"},
+                                            {"time_total_s", "time s"}};
+
+// The measures charted across runs: summary key, title, axis label.
+struct ChartedMeasure {
+  const char* key;
+  const char* title;
+  const char* label;
+};
+const std::vector<ChartedMeasure> kChartedMeasures = {
+    {"avg_quality", "Mean triangle quality Q", "mean Q"},
+    {"pct_triangles_angle_below_30", "% triangles with an angle < 30°", "% < 30°"},
+    {"hausdorff_pct", "Hausdorff distance, % of diagonal", "Hausdorff %"},
+    {"min_dihedral_deg", "Smallest tet dihedral angle (°)", "min dihedral"},
+    {"time_total_s", "Time of the run (s)", "seconds"}};
+
+// Swept parameters that set the resolution, preferred as the charts' x axis.
+const std::vector<std::string> kResolutionParameters = {"edge-length", "seeds"};
+
+// Histograms of each run: key in RunMeasures::histograms and how it is drawn. The smallest
+// angle has the seed paper's 30° threshold marked.
+struct RunHistogram {
+  const char* key;
+  HistogramStyle style;
+};
+const std::vector<RunHistogram>& run_histograms() {
+  static const std::vector<RunHistogram> list = {
+      {"quality", {"Triangle quality Q", "Q (1 = equilateral)", "#4a7fb5", "triangles", {}}},
+      {"min_angle_deg",
+       {"Smallest angle of each triangle", "degrees", "#c0803a", "triangles", 30.0}},
+      {"dihedral_deg",
+       {"Dihedral angles of the tets", "degrees", "#5a9a5a", "dihedral angles", {}}}};
+  return list;
+}
+
+bool text_column(const std::string& c) {
+  return c == "model" || c == "key" || c == "status" || c == "error";
+}
+
+// A cell of the key table: booleans as yes / no, the status as a badge.
+std::string key_cell(const std::string& column, const json& value) {
+  if (column == "status" && value.is_string())
+    return "<span class=\"status " + escape_html(value.get<std::string>()) + "\">" +
+           escape_html(value.get<std::string>()) + "</span>";
+  if (value.is_boolean()) return value.get<bool>() ? "yes" : "<b class=\"bad\">no</b>";
+  return escape_html(display(value));
+}
+
+// The charts' x axis: a swept resolution parameter, else the first numeric swept parameter,
+// else the number of triangles. Returns the summary column and its label.
+std::string chart_x_column(const StudyOutcome& outcome, const json& rows) {
+  const std::vector<std::string> labels = swept_labels(outcome);
+  auto numeric = [&](const std::string& label) {
+    for (const json& row : rows)
+      if (!row[label].is_number()) return false;
+    return !rows.empty();
+  };
+  for (const std::string& wanted : kResolutionParameters)
+    for (const std::string& label : labels) {
+      const size_t dot = label.rfind('.');
+      const std::string name = dot == std::string::npos ? label : label.substr(dot + 1);
+      if (name == wanted && numeric(label)) return label;
+    }
+  for (const std::string& label : labels)
+    if (numeric(label)) return label;
+  return "triangles";
+}
+
+// The charts across runs, one line per model; "" when there is nothing to chart.
+std::string charts_across_runs(const StudyOutcome& outcome, const json& rows) {
+  const std::string x = chart_x_column(outcome, rows);
+  std::vector<std::string> models;
+  for (const json& row : rows) {
+    const std::string m = row["model"].get<std::string>();
+    if (std::find(models.begin(), models.end(), m) == models.end()) models.push_back(m);
+  }
+  double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
+  for (const json& row : rows)
+    if (row[x].is_number()) {
+      x_lo = std::min(x_lo, row[x].get<double>());
+      x_hi = std::max(x_hi, row[x].get<double>());
+    }
+  std::ostringstream html;
+  for (const ChartedMeasure& measure : kChartedMeasures) {
+    std::vector<Series> series;
+    for (size_t m = 0; m < models.size(); ++m) {
+      Series s{models[m], series_colour(static_cast<int>(m)), {}};
+      for (const json& row : rows)
+        // A failed run's numbers are those of a half-finished model: left out.
+        if (row["model"] == models[m] && row["status"] != "failed" && row[x].is_number() &&
+            row[measure.key].is_number())
+          s.points.push_back({row[x].get<double>(), row[measure.key].get<double>()});
+      series.push_back(s);
+    }
+    html << line_chart_svg(series, {measure.title, x, measure.label, wants_log_axis(x_lo, x_hi)});
+  }
+  if (html.str().empty()) return "";
+  std::ostringstream out;
+  out << "<div class=\"charts\">\n" << html.str() << "\n</div>\n<p class=\"meta\">";
+  for (size_t m = 0; m < models.size(); ++m)
+    out << "<span class=\"swatch\" style=\"background:" << series_colour(static_cast<int>(m))
+        << "\"></span>" << escape_html(models[m]) << " &nbsp; ";
+  out << "One point per run (failed runs left out), against " << escape_html(x) << ".</p>\n";
+  return out.str();
+}
+
+const char* kStyle =
+    "body{font-family:system-ui,-apple-system,'Segoe UI',sans-serif;margin:20px 24px;color:#222;"
+    "background:#fff}\n"
+    "h1{font-size:22px;margin:0 0 4px} h2{font-size:18px;margin:22px 0 8px}"
+    " h3{font-size:15px;margin:0 0 8px}\n"
+    ".meta{color:#555;font-size:13px;margin:4px 0}\n"
+    ".table-wrap{overflow-x:auto;border:1px solid #ddd}\n"
+    "table{border-collapse:collapse;font-size:12px;white-space:nowrap}\n"
+    "table.key{font-size:13px}\n"
+    "th,td{padding:3px 7px;border-bottom:1px solid #e4e4e4;text-align:right}\n"
+    "th{background:#f3f3ef;position:sticky;top:0} td.text,th.text{text-align:left}\n"
+    "tr.failed td{background:#fde8e8} tr.invalid td{background:#fff6dc} b.bad{color:#c53030}\n"
+    "details.all{margin:8px 0} details.all>summary{cursor:pointer;color:#355;font-size:13px}\n"
+    ".status{display:inline-block;padding:1px 7px;border-radius:9px;font-size:12px;color:#fff}\n"
+    ".status.ok{background:#3a7d44} .status.invalid{background:#b7791f}"
+    " .status.failed{background:#c53030}\n"
+    ".charts{display:flex;flex-wrap:wrap;gap:10px}\n"
+    ".run{border:1px solid #ddd;border-radius:6px;padding:12px;margin:14px 0}\n"
+    ".run .cols{display:flex;flex-wrap:wrap;gap:14px;align-items:flex-start}\n"
+    ".run figure{margin:0;flex:0 1 440px;max-width:440px}\n"
+    ".run figcaption{font-size:12px;color:#555}\n"
+    ".run img{width:100%;height:auto;border:1px solid #e4e4e4}\n"
+    ".histograms{display:flex;flex-wrap:wrap;gap:10px;margin-top:8px}\n"
+    "svg text{font-size:10px;fill:#444} svg .title{font-size:12px;fill:#222}\n"
+    "svg .axis{stroke:#888;stroke-width:1} svg .grid{stroke:#e6e6e6;stroke-width:1}\n"
+    "svg .marker{stroke:#c53030;stroke-width:1;stroke-dasharray:4 3}\n"
+    "svg polyline{stroke-width:1.5}\n"
+    ".swatch{display:inline-block;width:11px;height:11px;border:1px solid #999;margin-right:4px;"
+    "vertical-align:middle}\n"
+    ".legend{columns:3;font-size:12px} .regions{font-size:12px;margin-top:4px}\n"
+    ".error{color:#c53030;font-family:monospace;white-space:pre-wrap}\n";
+
+// The names and colours of a legend, each in an element `tag` (span or div).
+std::string swatch_list(const json& legend, const std::string& tag = "span") {
+  std::string out;
+  for (const json& entry : legend)
+    out += "<" + tag + "><span class=\"swatch\" style=\"background:" +
+           escape_html(entry.value("colour", std::string())) + "\"></span>" +
+           escape_html(entry.value("name", std::string())) + "</" + tag + "> ";
+  return out;
+}
+
+}  // namespace
+
 std::string html_report(const StudyOutcome& outcome) {
   const Study& study = outcome.study;
   const std::vector<std::string> columns = summary_columns(outcome);
@@ -366,45 +482,48 @@ std::string html_report(const StudyOutcome& outcome) {
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
        << "<title>voroseal study " << escape_html(study.name) << "</title>\n"
        << "<style>\n"
-          "body{font-family:system-ui,-apple-system,'Segoe UI',sans-serif;margin:24px;color:#222;background:#fff}\n"
-          "h1{font-size:22px;margin:0 0 4px} h2{font-size:18px;margin:28px 0 8px} h3{font-size:15px;margin:0 0 8px}\n"
-          ".meta{color:#555;font-size:13px}\n"
-          ".table-wrap{overflow-x:auto;border:1px solid #ddd}\n"
-          "table{border-collapse:collapse;font-size:12px;white-space:nowrap}\n"
-          "th,td{padding:3px 7px;border-bottom:1px solid #e4e4e4;text-align:right}\n"
-          "th{background:#f3f3ef;position:sticky;top:0} td.text,th.text{text-align:left}\n"
-          "tr.failed td{background:#fde8e8} tr.invalid td{background:#fff6dc}\n"
-          ".status{display:inline-block;padding:1px 7px;border-radius:9px;font-size:12px;color:#fff}\n"
-          ".status.ok{background:#3a7d44} .status.invalid{background:#b7791f} .status.failed{background:#c53030}\n"
-          ".run{border:1px solid #ddd;border-radius:6px;padding:12px;margin:14px 0}\n"
-          ".run .cols{display:flex;flex-wrap:wrap;gap:14px;align-items:flex-start}\n"
-          ".run .cols>a{flex:0 1 560px;max-width:560px}\n"
-          ".run img{width:100%;height:auto;border:1px solid #e4e4e4}\n"
-          ".histogram text{font-size:10px;fill:#444} .histogram .title{font-size:12px;fill:#222}\n"
-          ".histogram .axis{stroke:#888;stroke-width:1}\n"
-          ".swatch{display:inline-block;width:11px;height:11px;border:1px solid #999;margin-right:4px;"
-          "vertical-align:middle}\n"
-          ".legend{columns:3;font-size:12px} .error{color:#c53030;font-family:monospace;white-space:pre-wrap}\n"
-          "</style>\n</head>\n<body>\n";
-  html << "<h1>Study " << escape_html(study.name) << "</h1>\n<p class=\"meta\">" << outcome.runs.size() << " runs: "
-       << outcome.runs.size() - outcome.failed - outcome.invalid << " ok, " << outcome.invalid << " invalid, "
-       << outcome.failed << " failed; " << display(json(outcome.seconds)) << " s. Steps: read";
+       << kStyle << "</style>\n</head>\n<body>\n";
+  html << "<h1>Study " << escape_html(study.name) << "</h1>\n<p class=\"meta\">"
+       << outcome.runs.size() << " runs: " << outcome.runs.size() - outcome.failed - outcome.invalid
+       << " ok, " << outcome.invalid << " invalid, " << outcome.failed << " failed; "
+       << display(json(outcome.seconds)) << " s. Steps: read";
   for (const StudyStep& s : study.steps) html << " &rarr; " << escape_html(s.module);
   if (!study.write.empty()) html << " &rarr; write";
-  html << ". Table: <a href=\"summary.csv\">summary.csv</a>, <a href=\"summary.json\">summary.json</a>.</p>\n";
+  html << ". Table: <a href=\"summary.csv\">summary.csv</a>, <a href=\"summary.json\">"
+          "summary.json</a>.</p>\n";
 
-  html << "<h2>Summary</h2>\n<div class=\"table-wrap\"><table>\n<thead><tr>";
-  for (const std::string& c : columns) {
-    const bool text = c == "model" || c == "key" || c == "status" || c == "error";
-    html << "<th" << (text ? " class=\"text\"" : "") << ">" << escape_html(c) << "</th>";
-  }
+  // The key columns; the swept parameters are the resolution of each run.
+  html << "<h2>Summary</h2>\n<table class=\"key\">\n<thead><tr><th>run</th>"
+          "<th class=\"text\">model</th>";
+  const std::vector<std::string> swept = swept_labels(outcome);
+  for (const std::string& label : swept) html << "<th>" << escape_html(label) << "</th>";
+  for (const KeyColumn& c : kKeyColumns)
+    html << "<th" << (text_column(c.key) ? " class=\"text\"" : "") << ">" << c.heading << "</th>";
   html << "</tr></thead>\n<tbody>\n";
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const json& row = rows[i];
+  for (const json& row : rows) {
+    html << "<tr class=\"" << escape_html(row["status"].get<std::string>())
+         << "\"><td><a href=\"#run-" << row["run"].dump() << "\">" << row["run"].dump()
+         << "</a></td><td class=\"text\">" << escape_html(row["model"].get<std::string>())
+         << "</td>";
+    for (const std::string& label : swept)
+      html << "<td>" << escape_html(display(row[label])) << "</td>";
+    for (const KeyColumn& c : kKeyColumns)
+      html << "<td" << (text_column(c.key) ? " class=\"text\"" : "") << ">"
+           << key_cell(c.key, row[c.key]) << "</td>";
+    html << "</tr>\n";
+  }
+  html << "</tbody></table>\n";
+
+  // Every column, behind a toggle.
+  html << "<details class=\"all\"><summary>All " << columns.size()
+       << " columns (as in summary.csv)</summary>\n<div class=\"table-wrap\"><table>\n<thead><tr>";
+  for (const std::string& c : columns)
+    html << "<th" << (text_column(c) ? " class=\"text\"" : "") << ">" << escape_html(c) << "</th>";
+  html << "</tr></thead>\n<tbody>\n";
+  for (const json& row : rows) {
     html << "<tr class=\"" << escape_html(row["status"].get<std::string>()) << "\">";
     for (const std::string& c : columns) {
-      const bool text = c == "model" || c == "key" || c == "status" || c == "error";
-      html << "<td" << (text ? " class=\"text\"" : "") << ">";
+      html << "<td" << (text_column(c) ? " class=\"text\"" : "") << ">";
       if (c == "run")
         html << "<a href=\"#run-" << row["run"].dump() << "\">" << row["run"].dump() << "</a>";
       else
@@ -413,38 +532,46 @@ std::string html_report(const StudyOutcome& outcome) {
     }
     html << "</tr>\n";
   }
-  html << "</tbody></table></div>\n";
+  html << "</tbody></table></div>\n</details>\n";
+
+  const std::string charts = charts_across_runs(outcome, rows);
+  if (!charts.empty()) html << "<h2>Across runs</h2>\n" << charts;
 
   html << "<h2>Runs</h2>\n";
   for (const RunOutcome& r : outcome.runs) {
     const int number = r.run.index + 1;
     html << "<section class=\"run\" id=\"run-" << number << "\">\n<h3>" << number << ". "
-         << escape_html(r.run.model_label) << " &mdash; " << escape_html(r.run.key) << " <span class=\"status "
-         << escape_html(r.status) << "\">" << escape_html(r.status) << "</span></h3>\n";
+         << escape_html(r.run.model_label) << " &mdash; " << escape_html(r.run.key)
+         << " <span class=\"status " << escape_html(r.status) << "\">" << escape_html(r.status)
+         << "</span></h3>\n";
     if (!r.error.empty()) html << "<p class=\"error\">" << escape_html(r.error) << "</p>\n";
     html << "<div class=\"cols\">\n";
+    const std::string what = escape_html(r.run.model_label + " " + r.run.key);
     if (!r.picture.empty())
-      html << "<a href=\"" << escape_url(r.picture) << "\"><img src=\"" << escape_url(r.picture) << "\" width=\""
-           << study.picture.width << "\" height=\"" << study.picture.height << "\" alt=\"surfaces of "
-           << escape_html(r.run.model_label + " " + r.run.key) << "\"></a>\n";
-    html << "<div>\n";
-    if (r.histograms.contains("quality"))
-      html << svg_histogram("Triangle quality Q", r.histograms["quality"], "#4a7fb5", "Q (1 = equilateral)")
-           << "\n";
-    if (r.histograms.contains("min_angle_deg"))
-      html << svg_histogram("Smallest angle of each triangle", r.histograms["min_angle_deg"], "#c0803a", "degrees")
-           << "\n";
-    html << "</div>\n<div>\n<table>\n<thead><tr><th class=\"text\">step</th><th class=\"text\">status</th>"
+      html << "<figure><a href=\"" << escape_url(r.picture) << "\"><img src=\""
+           << escape_url(r.picture) << "\" width=\"" << study.picture.width << "\" height=\""
+           << study.picture.height << "\" alt=\"surfaces of " << what
+           << "\"></a><figcaption>Surfaces, one colour per surface part</figcaption></figure>\n";
+    if (!r.cut_picture.empty())
+      html << "<figure class=\"tets\"><a href=\"" << escape_url(r.cut_picture) << "\"><img src=\""
+           << escape_url(r.cut_picture) << "\" width=\"" << study.picture.width << "\" height=\""
+           << study.picture.height << "\" alt=\"tet mesh of " << what
+           << " cut through its centre\"></a><figcaption>Tet mesh cut through its centre, by "
+              "region<div class=\"regions\">"
+           << swatch_list(r.region_legend) << "</div></figcaption></figure>\n";
+    html << "<div>\n<table>\n<thead><tr><th class=\"text\">step</th><th class=\"text\">status</th>"
             "<th>seconds</th></tr></thead>\n<tbody>\n";
-    html << "<tr><td class=\"text\">read</td><td class=\"text\"></td><td>" << display(json(r.read_seconds))
-         << "</td></tr>\n";
+    html << "<tr><td class=\"text\">read</td><td class=\"text\"></td><td>"
+         << display(json(r.read_seconds)) << "</td></tr>\n";
     for (const StepOutcome& s : r.steps)
       html << "<tr><td class=\"text\">"
-           << (s.text.empty() ? escape_html(s.module)
-                              : "<a href=\"" + escape_url(s.text) + "\">" + escape_html(s.module) + "</a>")
-           << "</td><td class=\"text\">" << escape_html(s.status)
-           << "</td><td>" << (s.status == "skipped" ? "" : display(json(s.seconds))) << "</td></tr>\n";
-    html << "<tr><td class=\"text\">write</td><td class=\"text\"></td><td>" << display(json(r.write_seconds))
+           << (s.text.empty()
+                   ? escape_html(s.module)
+                   : "<a href=\"" + escape_url(s.text) + "\">" + escape_html(s.module) + "</a>")
+           << "</td><td class=\"text\">" << escape_html(s.status) << "</td><td>"
+           << (s.status == "skipped" ? "" : display(json(s.seconds))) << "</td></tr>\n";
+    html << "<tr><td class=\"text\">write</td><td class=\"text\"></td><td>"
+         << display(json(r.write_seconds))
          << "</td></tr>\n<tr><td class=\"text\">total</td><td class=\"text\"></td><td>"
          << display(json(r.total_seconds)) << "</td></tr>\n</tbody></table>\n<p class=\"meta\">";
     // The run's folder: in the study's output, or in a shard's when merged (study_results.h).
@@ -454,16 +581,18 @@ std::string html_report(const StudyOutcome& outcome) {
             : fs::path(r.run.directory).lexically_relative(study.output).generic_string();
     html << "<a href=\"" << escape_url(folder + "/run.json") << "\">run.json</a>";
     for (const std::string& o : r.outputs)
-      html << " &middot; <a href=\"" << escape_url(o) << "\">" << escape_html(fs::path(o).filename().string())
-           << "</a>";
-    html << "</p>\n</div>\n</div>\n";
-    if (!r.legend.empty()) {
-      html << "<details><summary>Colours (" << r.legend.size() << " surfaces)</summary><div class=\"legend\">\n";
-      for (const json& entry : r.legend)
-        html << "<div><span class=\"swatch\" style=\"background:" << escape_html(entry["colour"].get<std::string>())
-             << "\"></span>" << escape_html(entry["name"].get<std::string>()) << "</div>\n";
-      html << "</div></details>\n";
-    }
+      html << " &middot; <a href=\"" << escape_url(o) << "\">"
+           << escape_html(fs::path(o).filename().string()) << "</a>";
+    html << "</p>\n</div>\n</div>\n<div class=\"histograms\">\n";
+    for (const RunHistogram& h : run_histograms())
+      if (r.histograms.contains(h.key))
+        if (const std::optional<Histogram> histogram = histogram_from_json(r.histograms[h.key]))
+          html << histogram_svg(*histogram, h.style) << "\n";
+    html << "</div>\n";
+    if (!r.legend.empty())
+      html << "<details><summary>Colours (" << r.legend.size()
+           << " surfaces)</summary><div class=\"legend\">\n"
+           << swatch_list(r.legend, "div") << "</div></details>\n";
     html << "</section>\n";
   }
   html << "</body>\n</html>\n";

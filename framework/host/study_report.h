@@ -1,7 +1,8 @@
 // What a study writes besides each run's own outputs: the summary table (CSV and JSON, one row
 // per run with the seed paper's Table 2 columns and the time of every step), each run's
-// run.json, and report.html (the table, quality histograms as inline SVG, and each run's
-// picture), self-contained except for the pictures beside it: no script, no network.
+// run.json, and report.html (the key columns, the rest behind a toggle, charts across runs and
+// each run's pictures and histograms, report_charts.h), self-contained except for the pictures
+// beside it: no script, no network.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -25,7 +26,8 @@ struct RunMeasures {
   /// features_lost_larger_than_cell, pockets and pockets_opened from
   /// report["remesh"]["topology"]. "measured_by" says which: "stats" or "pipeline".
   nlohmann::json row = nlohmann::json::object();
-  /// {"quality": {"lo", "hi", "counts"}, "min_angle_deg": {...}} over the model's triangles.
+  /// {"quality": {"lo", "hi", "counts"}, "min_angle_deg": {...}} over the model's triangles;
+  /// "dihedral_deg" over the tets' dihedral angles when the run made a volume mesh.
   nlohmann::json histograms = nlohmann::json::object();
 };
 

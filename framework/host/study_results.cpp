@@ -86,6 +86,10 @@ RunOutcome run_outcome_from_json(const json& document, const StudyRun& run,
     for (const json& o : document.at("outputs"))
       outcome.outputs.push_back(rebase(o.get<std::string>(), written_to, target));
     outcome.picture = rebase(text_or_empty(document.at("picture")), written_to, target);
+    // Absent from the run.json files of versions without the picture of the tets.
+    outcome.cut_picture =
+        rebase(text_or_empty(document.value("cut_picture", json())), written_to, target);
+    outcome.region_legend = document.value("region_legend", json::array());
   } catch (const json::exception& e) {
     throw InputError(file, 0, std::string("not a voroseal run.json: ") + e.what());
   }
@@ -110,6 +114,7 @@ std::optional<RunOutcome> read_complete_run(const Study& study, const StudyRun& 
   }
   std::vector<std::string> files = outcome.outputs;
   if (!outcome.picture.empty()) files.push_back(outcome.picture);
+  if (!outcome.cut_picture.empty()) files.push_back(outcome.cut_picture);
   for (const std::string& f : files) {
     std::error_code error;
     if (!fs::is_regular_file(fs::path(study.output) / f, error)) return std::nullopt;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "framework/core/error.h"
+#include "framework/host/render_annotations.h"
 #include "framework/model/model_builder.h"
 #include "tests/support/test_models.h"
 
@@ -13,7 +14,8 @@ namespace voroseal {
 namespace {
 
 uint32_t read32(const std::vector<uint8_t>& b, size_t at) {
-  return (uint32_t(b[at]) << 24) | (uint32_t(b[at + 1]) << 16) | (uint32_t(b[at + 2]) << 8) | b[at + 3];
+  return (uint32_t(b[at]) << 24) | (uint32_t(b[at + 1]) << 16) | (uint32_t(b[at + 2]) << 8) |
+         b[at + 3];
 }
 
 // Decodes what encode_png writes (one IDAT, filter 0), checking every chunk's CRC.
@@ -51,7 +53,8 @@ Image decode_png(const std::vector<uint8_t>& png) {
   for (int y = 0; y < image.height; ++y) {
     const size_t row = y * (3 * size_t(image.width) + 1);
     EXPECT_EQ(raw[row], 0);
-    image.rgb.insert(image.rgb.end(), raw.begin() + row + 1, raw.begin() + row + 1 + 3 * image.width);
+    image.rgb.insert(image.rgb.end(), raw.begin() + row + 1,
+                     raw.begin() + row + 1 + 3 * image.width);
   }
   return image;
 }
@@ -142,7 +145,8 @@ TEST(Render, PerspectiveAndOrthographicViewsDiffer) {
   const Image perspective = render_model(model, options);
   long background = 0;
   for (size_t p = 0; p < perspective.rgb.size(); p += 3)
-    background += perspective.rgb[p] == options.background[0] && perspective.rgb[p + 1] == options.background[1];
+    background += perspective.rgb[p] == options.background[0] &&
+                  perspective.rgb[p + 1] == options.background[1];
   EXPECT_LT(background, 0.8 * 160 * 120);
   EXPECT_NE(ortho.rgb, perspective.rgb);
 }
@@ -156,7 +160,8 @@ TEST(Render, EdgesAndContactsAreDrawnDark) {
   const Image lined = render_model(model, options);
   auto dark = [](const Image& image) {
     long n = 0;
-    for (size_t p = 0; p < image.rgb.size(); p += 3) n += image.rgb[p] < 40 && image.rgb[p + 1] < 40;
+    for (size_t p = 0; p < image.rgb.size(); p += 3)
+      n += image.rgb[p] < 40 && image.rgb[p + 1] < 40;
     return n;
   };
   EXPECT_EQ(dark(plain), 0);
@@ -181,6 +186,41 @@ TEST(Render, ColoursOfNeighbouringPartsDiffer) {
     const auto a = surface_colour(i), b = surface_colour(i + 1);
     EXPECT_GT(std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]), 60) << i;
   }
+}
+
+TEST(Render, ScaleBarsAreOneTwoOrFiveTimesAPowerOfTen) {
+  EXPECT_DOUBLE_EQ(scale_bar_length(0.1, 176), 1000);  // 1,760 units fit
+  EXPECT_DOUBLE_EQ(scale_bar_length(0.1, 250), 2000);
+  EXPECT_DOUBLE_EQ(scale_bar_length(2, 150), 50);
+  EXPECT_DOUBLE_EQ(scale_bar_length(400, 100), 0.2);
+  EXPECT_EQ(scale_bar_length(0, 100), 0);
+  EXPECT_EQ(scale_bar_label(2000), "2 km");
+  EXPECT_EQ(scale_bar_label(500), "500 m");
+  EXPECT_EQ(scale_bar_label(0.5), "0.5 m");
+}
+
+TEST(Render, AxesAndScaleBarAreDrawnInTheLowerCorners) {
+  const StructuralModel model = build_model(test::lattice_box(2, true));
+  RenderOptions options = plain_options();
+  options.width = 480;
+  options.height = 320;
+  const Image plain = render_model(model, options);
+  options.axes_and_scale = true;
+  const Image annotated = render_model(model, options);
+  // Dark ink (the bar and its label) on the right, the red x axis on the left, low down.
+  long ink = 0, red = 0, changed_above = 0;
+  for (int y = 0; y < annotated.height; ++y)
+    for (int x = 0; x < annotated.width; ++x) {
+      const uint8_t* p = &annotated.rgb[3 * (size_t(y) * annotated.width + x)];
+      const uint8_t* q = &plain.rgb[3 * (size_t(y) * plain.width + x)];
+      const bool bottom = y > 0.6 * annotated.height;
+      if (!bottom) changed_above += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+      if (bottom && x > annotated.width / 2 && p[0] < 60 && p[1] < 60 && p[2] < 60) ++ink;
+      if (bottom && x < annotated.width / 4 && p[0] > 150 && p[1] < 80 && p[2] < 80) ++red;
+    }
+  EXPECT_GT(ink, 100);
+  EXPECT_GT(red, 20);
+  EXPECT_EQ(changed_above, 0) << "the annotations stay in the lower corners";
 }
 
 }  // namespace
