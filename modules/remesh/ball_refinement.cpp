@@ -139,6 +139,28 @@ BallRefinementRound classify(const std::vector<BallViolation>& failures,
   return r;
 }
 
+// A seed in each spot, unless a seed (or one put in an earlier spot) is nearer than a quarter of
+// the spot's size: places listed twice, or on a seed already, would give coincident seeds.
+void add_spot_seeds(const std::vector<Vec3>& existing, const std::vector<Spot>& spots,
+                    std::vector<Vec3>& seeds) {
+  PointCloud cloud{existing.data(), existing.size()};
+  PointKdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::vector<const Spot*> added;
+  for (const Spot& s : spots) {
+    const double near = 0.25 * s.size;
+    std::uint32_t v = 0;
+    double d2 = 0.0;
+    if (!existing.empty() && tree.knnSearch(s.where.data(), 1, &v, &d2) == 1 && d2 < near * near)
+      continue;
+    bool crowded = false;
+    for (const Spot* a : added) crowded = crowded || (a->where - s.where).norm() < near;
+    if (crowded) continue;
+    added.push_back(&s);
+    seeds.push_back(s.where);
+  }
+}
+
 // With the sizes lowered (`factor`), the density follows; seeds go in every spot and where the
 // density rose, in proportion to the integral of sqrt(rho) so that cells elsewhere keep their
 // size, and all seeds are optimised again. Returns the seeds added.
@@ -154,12 +176,21 @@ int add_seeds_and_optimize(const StructuralModel& model, const std::vector<doubl
   const int n = static_cast<int>(seeds.seeds.size());
   const int wanted = static_cast<int>(std::lround(n * geometry.root_mass() / root_before));
   std::vector<Vec3> initial = seeds.seeds;
-  for (const Spot& s : spots) initial.push_back(s.where);
+  add_spot_seeds(seeds.seeds, spots, initial);
   const int drawn = std::max(0, wanted - static_cast<int>(initial.size()));
   const std::vector<Vec3> more =
       sample_growth(geometry, before, density, drawn, options.random_seed + round + 1);
   initial.insert(initial.end(), more.begin(), more.end());
   const int added = static_cast<int>(initial.size()) - n;
+  if (refine.lloyd_iterations > 0) {
+    SeedOptions lloyd = options;
+    lloyd.optimizer.kind = OptimizerKind::Lloyd;
+    lloyd.optimizer.max_iterations = refine.lloyd_iterations;
+    SeedOptimizationResult parted =
+        optimize_seeds(geometry, std::move(initial), lloyd, log, progress);
+    initial = std::move(parted.seeds);
+    seeds.optimization_seconds += parted.optimization_seconds;
+  }
   SeedOptions again = options;
   again.optimizer.max_iterations = refine.iterations;
   again.boundary_weight = seeds.alpha;

@@ -23,6 +23,9 @@ struct BallRefinementOptions {
   /// robustness sweep it raised no pass rate and cost CloudSpin_fixed a region (benchmarks.md).
   int max_rounds = 0;
   int iterations = 60;     // optimiser iterations after each round
+  /// Lloyd steps before them: seeds put close together get a contact term whose gradient grows
+  /// like 1 / their distance (the L-BFGS line search then fails at once); Lloyd parts them.
+  int lloyd_iterations = 5;
   double shrink = 0.5;     // size around a failure: shrink × the size of its cell
   double gradation = 0.3;  // size growth per unit length away from a refined spot
   /// d_min: failures whose pieces are closer than this are merges, not refined. With no merge
