@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 
 #include "framework/core/error.h"
 #include "io/format_common.h"
+#include "io/vtk_binary.h"
 
 namespace voroseal {
 
@@ -86,6 +88,9 @@ class XmlScanner {
     return range;
   }
 
+  /// Continues scanning at `pos` (past binary data that must not be read as XML).
+  void skip_to(size_t pos) { pos_ = pos; }
+
   std::string_view text() const { return text_; }
 
  private:
@@ -96,7 +101,8 @@ class XmlScanner {
   }
 
   static bool name_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '.' || c == '-';
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '.' ||
+           c == '-';
   }
 
   void parse_tag(size_t lt, Tag& tag) {
@@ -129,7 +135,8 @@ class XmlScanner {
       if (i == key_start) fail(i, "malformed attribute in <" + tag.name + ">");
       std::string key(text_.substr(key_start, i - key_start));
       while (i < text_.size() && std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
-      if (i >= text_.size() || text_[i] != '=') fail(i, "attribute " + key + " of <" + tag.name + "> has no value");
+      if (i >= text_.size() || text_[i] != '=')
+        fail(i, "attribute " + key + " of <" + tag.name + "> has no value");
       ++i;
       while (i < text_.size() && std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
       if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\''))
@@ -156,7 +163,26 @@ struct VtuData {
   std::vector<Vec3> points;
   std::vector<long long> connectivity, offsets, types, surface, region;
   long piece_line = 0;  // line of <Piece>
-  long connectivity_line = 0, offsets_line = 0, types_line = 0, surface_line = 0, region_line = 0;  // DataArray tags
+  long connectivity_line = 0, offsets_line = 0, types_line = 0, surface_line = 0;  // DataArray tags
+  long region_line = 0;
+};
+
+// A DataArray the reader uses: its tag and, when inline, the text up to </DataArray>. Arrays
+// are decoded once the whole file is scanned: appended data comes last, and the offsets give
+// the size of the connectivity.
+struct ArrayRef {
+  XmlScanner::Tag tag;
+  long line = 0;
+  size_t begin = 0, end = 0;
+  bool found = false;
+};
+
+// How binary arrays are stored: attributes of <VTKFile>, and the <AppendedData> section.
+struct BinaryLayout {
+  int header_size = 4;  // header_type UInt32 (VTK's default) or UInt64
+  bool zlib = false;
+  bool appended = false, appended_base64 = false;
+  std::string_view appended_data;  // the bytes after '_'
 };
 
 // True when `text` ends, but for white space, with "</VTKFile>" (spaces allowed before '>').
@@ -178,10 +204,12 @@ class VtuParser {
   VtuData parse() {
     XmlScanner::Tag tag;
     if (!xml_.next(tag)) xml_.fail(xml_.text().size(), "not a VTK XML file: no <VTKFile>");
-    if (tag.name != "VTKFile" || tag.closing) xml_.fail(tag.begin, "not a VTK XML file: no <VTKFile>");
+    if (tag.name != "VTKFile" || tag.closing)
+      xml_.fail(tag.begin, "not a VTK XML file: no <VTKFile>");
     const std::string* type = tag.attribute("type");
-    if (!type || *type != "UnstructuredGrid") xml_.fail(tag.begin, "only VTK UnstructuredGrid files are supported");
-    if (tag.attribute("compressor")) xml_.fail(tag.begin, "compressed VTK files are not supported");
+    if (!type || *type != "UnstructuredGrid")
+      xml_.fail(tag.begin, "only VTK UnstructuredGrid files are supported");
+    read_layout(tag);
     // Checked on the file's last bytes first: a truncated or padded file is refused before its
     // data is read.
     if (!ends_with_closing_tag(xml_.text()))
@@ -192,18 +220,20 @@ class VtuParser {
     bool piece = false;
     while (xml_.next(tag)) {
       if (tag.name == "VTKFile" && tag.closing) {
+        decode();
         finish();
         return std::move(d_);
       }
-      if (tag.name == "AppendedData") xml_.fail(tag.begin, "appended (binary) VTK data is not supported");
-      if (tag.name == "Piece" && !tag.closing) {
+      if (tag.name == "AppendedData" && !tag.closing) {
+        appended_data(tag);
+      } else if (tag.name == "Piece" && !tag.closing) {
         if (piece) xml_.fail(tag.begin, "several Pieces are not supported");
         piece = true;
         d_.piece_line = xml_.line_of(tag.begin);
         d_.points_declared = count_attribute(tag, "NumberOfPoints");
         d_.cells_declared = count_attribute(tag, "NumberOfCells");
-      } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "CellData" || tag.name == "PointData" ||
-                 tag.name == "FieldData") {
+      } else if (tag.name == "Points" || tag.name == "Cells" || tag.name == "CellData" ||
+                 tag.name == "PointData" || tag.name == "FieldData") {
         section = tag.closing || tag.self_closing ? "" : tag.name;
       } else if (tag.name == "DataArray" && !tag.closing) {
         data_array(tag, section);
@@ -213,6 +243,46 @@ class VtuParser {
   }
 
  private:
+  // The <VTKFile> attributes that say how binary data is stored.
+  void read_layout(const XmlScanner::Tag& tag) {
+    const std::string* order = tag.attribute("byte_order");
+    if (order && *order == "BigEndian")
+      xml_.fail(tag.begin, "big-endian VTK files are not supported (write them LittleEndian)");
+    if (order && *order != "LittleEndian")
+      xml_.fail(tag.begin, "unknown byte_order \"" + *order + "\"");
+    const std::string* header = tag.attribute("header_type");
+    if (header && *header != "UInt32" && *header != "UInt64")
+      xml_.fail(tag.begin, "header_type must be UInt32 or UInt64, not \"" + *header + "\"");
+    layout_.header_size = header && *header == "UInt64" ? 8 : 4;
+    const std::string* compressor = tag.attribute("compressor");
+    if (compressor && !compressor->empty() && *compressor != "vtkZLibDataCompressor")
+      xml_.fail(tag.begin,
+                "compressor " + *compressor + " is not supported (only vtkZLibDataCompressor)");
+    layout_.zlib = compressor && !compressor->empty();
+  }
+
+  // <AppendedData encoding="raw|base64">_DATA</AppendedData>: the data is binary, so it is not
+  // scanned as XML; it ends at the file's last </AppendedData>.
+  void appended_data(const XmlScanner::Tag& tag) {
+    if (layout_.appended) xml_.fail(tag.begin, "several <AppendedData> sections");
+    const std::string* encoding = tag.attribute("encoding");
+    if (!encoding || (*encoding != "raw" && *encoding != "base64"))
+      xml_.fail(tag.begin, "<AppendedData> needs encoding=\"raw\" or \"base64\"");
+    layout_.appended = true;
+    layout_.appended_base64 = *encoding == "base64";
+    if (tag.self_closing) return;
+    const std::string_view text = xml_.text();
+    size_t i = tag.end;
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i == text.size() || text[i] != '_')
+      xml_.fail(tag.begin, "<AppendedData> needs '_' before its data");
+    const size_t close = text.rfind("</AppendedData");
+    if (close == std::string_view::npos || close < i)
+      xml_.fail(tag.begin, "<AppendedData> is not closed by </AppendedData>");
+    layout_.appended_data = text.substr(i + 1, close - i - 1);
+    xml_.skip_to(close);
+  }
+
   long long count_attribute(const XmlScanner::Tag& tag, const char* key) {
     const std::string* v = tag.attribute(key);
     long long n = 0;
@@ -223,89 +293,177 @@ class VtuParser {
     return n;
   }
 
-  // Values of a DataArray as reals or integers, with the line of each bad token.
-  template <class T>
-  std::vector<T> values(const XmlScanner::Tag& tag, bool integers) {
-    std::vector<T> out;
-    if (tag.self_closing) return out;
-    const auto [begin, end] = xml_.content();
-    const std::string_view s = xml_.text();
-    size_t i = begin;
-    while (i < end) {
-      while (i < end && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-      if (i >= end) break;
-      const size_t start = i;
-      while (i < end && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-      const std::string_view token(s.data() + start, i - start);
-      if (integers) {
-        long long v = 0;
-        if (!parse_integer(token, v))
-          xml_.fail(start, "expected an integer in DataArray, found '" + std::string(token.substr(0, 40)) + "'");
-        out.push_back(static_cast<T>(v));
-      } else {
-        double v = 0;
-        if (!parse_finite_real(token, v))
-          xml_.fail(start, "expected a finite number in DataArray, found '" + std::string(token.substr(0, 40)) + "'");
-        out.push_back(static_cast<T>(v));
-      }
-    }
-    close_data_array(tag);
-    return out;
-  }
-
   void close_data_array(const XmlScanner::Tag& open) {
     XmlScanner::Tag tag;
     if (!xml_.next(tag) || tag.name != "DataArray" || !tag.closing)
       xml_.fail(open.begin, "DataArray is not closed by </DataArray>");
   }
 
+  ArrayRef* slot(const std::string& section, const std::string& key) {
+    if (section == "Points") return &points_;
+    if (section == "Cells" && key == "connectivity") return &connectivity_;
+    if (section == "Cells" && key == "offsets") return &offsets_;
+    if (section == "Cells" && key == "types") return &types_;
+    if (section == "CellData" && key == "surface") return &surface_;
+    if (section == "CellData" && key == "region") return &region_;
+    return nullptr;
+  }
+
   void data_array(const XmlScanner::Tag& tag, const std::string& section) {
-    const std::string* format = tag.attribute("format");
     const std::string* name = tag.attribute("Name");
-    const std::string key = name ? *name : "";
-    const bool used = section == "Points" || (section == "Cells" && (key == "connectivity" || key == "offsets" ||
-                                                                      key == "types")) ||
-                      (section == "CellData" && (key == "surface" || key == "region"));
-    if (!used) {
-      if (!tag.self_closing) {
-        xml_.content();
-        close_data_array(tag);
-      }
-      return;
+    ArrayRef* ref = slot(section, name ? *name : "");
+    std::pair<size_t, size_t> content{0, 0};
+    if (!tag.self_closing) {
+      content = xml_.content();
+      close_data_array(tag);
     }
-    if (!format || *format != "ascii")
-      xml_.fail(tag.begin, "only format=\"ascii\" DataArrays are supported (" + section + " " + key + ")");
+    if (!ref) return;
+    const std::string* format = tag.attribute("format");
+    if (!format || (*format != "ascii" && *format != "binary" && *format != "appended"))
+      xml_.fail(tag.begin, "DataArray needs format=\"ascii\", \"binary\" or \"appended\" (" +
+                               section + " " + (name ? *name : "") + ")");
     if (section == "Points") {
       const std::string* nc = tag.attribute("NumberOfComponents");
       if (nc && *nc != "3") xml_.fail(tag.begin, "Points need NumberOfComponents=\"3\"");
-      const std::vector<double> v = values<double>(tag, false);
-      if (v.size() % 3 != 0) xml_.fail(tag.begin, "the number of point coordinates is not a multiple of 3");
-      for (size_t i = 0; i < v.size(); i += 3) d_.points.emplace_back(v[i], v[i + 1], v[i + 2]);
-      return;
     }
-    std::vector<long long> v = values<long long>(tag, true);
-    if (key == "connectivity") d_.connectivity_line = xml_.line_of(tag.begin);
-    if (key == "offsets") d_.offsets_line = xml_.line_of(tag.begin);
-    if (key == "types") d_.types_line = xml_.line_of(tag.begin);
-    if (key == "surface") d_.surface_line = xml_.line_of(tag.begin);
-    if (key == "region") d_.region_line = xml_.line_of(tag.begin);
-    if (key == "connectivity") d_.connectivity = std::move(v);
-    if (key == "offsets") d_.offsets = std::move(v);
-    if (key == "types") d_.types = std::move(v);
-    if (key == "surface") d_.surface = std::move(v);
-    if (key == "region") d_.region = std::move(v);
+    *ref = ArrayRef{tag, xml_.line_of(tag.begin), content.first, content.second, true};
+  }
+
+  // Values of an ASCII DataArray as reals or integers, with the line of each bad token.
+  template <class T>
+  std::vector<T> ascii_values(const ArrayRef& ref, bool integers) {
+    std::vector<T> out;
+    const std::string_view s = xml_.text();
+    size_t i = ref.begin;
+    while (i < ref.end) {
+      while (i < ref.end && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+      if (i >= ref.end) break;
+      const size_t start = i;
+      while (i < ref.end && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+      const std::string_view token(s.data() + start, i - start);
+      if (integers) {
+        long long v = 0;
+        if (!parse_integer(token, v))
+          xml_.fail(start, "expected an integer in DataArray, found '" +
+                               std::string(token.substr(0, 40)) + "'");
+        out.push_back(static_cast<T>(v));
+      } else {
+        double v = 0;
+        if (!parse_finite_real(token, v))
+          xml_.fail(start, "expected a finite number in DataArray, found '" +
+                               std::string(token.substr(0, 40)) + "'");
+        out.push_back(static_cast<T>(v));
+      }
+    }
+    return out;
+  }
+
+  // The bytes where a binary array starts: its inline text, or its offset in <AppendedData>.
+  std::string_view binary_start(const ArrayRef& ref, const DataPlace& place) const {
+    if (*ref.tag.attribute("format") == "binary")
+      return xml_.text().substr(ref.begin, ref.end - ref.begin);
+    if (!layout_.appended) place.fail("format=\"appended\" but the file has no <AppendedData>");
+    const std::string* offset = ref.tag.attribute("offset");
+    long long at = 0;
+    if (!offset || !parse_integer(*offset, at) || at < 0)
+      place.fail("an appended DataArray needs a non-negative integer offset");
+    if (static_cast<unsigned long long>(at) > layout_.appended_data.size())
+      place.fail("offset " + *offset + " is past the end of the appended data (" +
+                 std::to_string(layout_.appended_data.size()) + " bytes)");
+    return layout_.appended_data.substr(static_cast<size_t>(at));
+  }
+
+  // The bytes of a binary array holding `expected` values (checked before they are read).
+  std::vector<unsigned char> binary_bytes(const ArrayRef& ref, const VtkType& type,
+                                          long long expected, const char* what,
+                                          const DataPlace& place) const {
+    const bool base64 = *ref.tag.attribute("format") == "binary" || layout_.appended_base64;
+    VtkBytes bytes(binary_start(ref, place), base64, place);
+    VtkArrayReader reader(bytes, layout_.header_size, layout_.zlib, place);
+    const uint64_t size = reader.read_header();
+    if (size % static_cast<uint64_t>(type.size) != 0)
+      place.fail(std::string(what) + ": " + std::to_string(size) +
+                 " bytes are not a whole number of " + type.name + " values");
+    const uint64_t count = size / static_cast<uint64_t>(type.size);
+    if (expected < 0 || count != static_cast<uint64_t>(expected))
+      place.fail(std::string(what) + " has " + std::to_string(count) + " values where " +
+                 std::to_string(expected) + " are expected");
+    return reader.read_data();
+  }
+
+  const VtkType& binary_type(const ArrayRef& ref, bool integers, const char* what,
+                             const DataPlace& place) const {
+    const std::string* name = ref.tag.attribute("type");
+    const VtkType* type = name ? vtk_type(*name) : nullptr;
+    if (!type)
+      place.fail(std::string(what) + " has an unknown DataArray type \"" + (name ? *name : "") +
+                 "\"");
+    if (integers && type->real)
+      place.fail(std::string(what) + " needs an integer type, not " + type->name);
+    return *type;
+  }
+
+  std::vector<long long> integers(const ArrayRef& ref, long long expected, const char* what) {
+    if (!ref.found) return {};
+    if (*ref.tag.attribute("format") == "ascii") return ascii_values<long long>(ref, true);
+    const DataPlace place{name_, ref.line};
+    const VtkType& type = binary_type(ref, true, what, place);
+    const std::vector<unsigned char> bytes = binary_bytes(ref, type, expected, what, place);
+    std::vector<long long> out(bytes.size() / static_cast<size_t>(type.size));
+    for (size_t i = 0; i < out.size(); ++i)
+      if (!vtk_integer(bytes.data() + i * type.size, type, out[i]))
+        place.fail(std::string(what) + " value " + std::to_string(i) + " is too large");
+    return out;
+  }
+
+  std::vector<double> reals(const ArrayRef& ref, long long expected, const char* what) {
+    if (!ref.found) return {};
+    if (*ref.tag.attribute("format") == "ascii") return ascii_values<double>(ref, false);
+    const DataPlace place{name_, ref.line};
+    const VtkType& type = binary_type(ref, false, what, place);
+    const std::vector<unsigned char> bytes = binary_bytes(ref, type, expected, what, place);
+    std::vector<double> out(bytes.size() / static_cast<size_t>(type.size));
+    for (size_t i = 0; i < out.size(); ++i) {
+      out[i] = vtk_real(bytes.data() + i * type.size, type);
+      if (!std::isfinite(out[i]))
+        place.fail("expected a finite number in DataArray, found " + std::to_string(out[i]));
+    }
+    return out;
+  }
+
+  // Decodes the arrays in an order that gives each binary one its expected size: the cell
+  // arrays from NumberOfCells, then the connectivity from the last offset.
+  void decode() {
+    if (d_.points_declared < 0) throw InputError(name_, 0, "no <Piece>");
+    const std::vector<double> xyz = reals(points_, 3 * d_.points_declared, "Points");
+    if (xyz.size() % 3 != 0)
+      xml_.fail(points_.tag.begin, "the number of point coordinates is not a multiple of 3");
+    for (size_t i = 0; i < xyz.size(); i += 3)
+      d_.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    d_.offsets = integers(offsets_, d_.cells_declared, "offsets");
+    d_.types = integers(types_, d_.cells_declared, "types");
+    d_.surface = integers(surface_, d_.cells_declared, "surface");
+    d_.region = integers(region_, d_.cells_declared, "region");
+    d_.connectivity =
+        integers(connectivity_, d_.offsets.empty() ? 0 : d_.offsets.back(), "connectivity");
+    d_.connectivity_line = connectivity_.line;
+    d_.offsets_line = offsets_.line;
+    d_.types_line = types_.line;
+    d_.surface_line = surface_.line;
+    d_.region_line = region_.line;
   }
 
   void finish() {
-    auto fail = [&](long line, const std::string& m) { throw InputError(source_name(), line, m); };
-    if (d_.points_declared < 0) fail(0, "no <Piece>");
+    auto fail = [&](long line, const std::string& m) { throw InputError(name_, line, m); };
     if (static_cast<long long>(d_.points.size()) != d_.points_declared)
-      fail(d_.piece_line, "NumberOfPoints is " + std::to_string(d_.points_declared) + " but the file gives " +
-                              std::to_string(d_.points.size()) + " points");
+      fail(d_.piece_line, "NumberOfPoints is " + std::to_string(d_.points_declared) +
+                              " but the file gives " + std::to_string(d_.points.size()) +
+                              " points");
     const size_t nc = static_cast<size_t>(d_.cells_declared);
     if (d_.offsets.size() != nc || d_.types.size() != nc)
       fail(d_.piece_line, "NumberOfCells is " + std::to_string(nc) + " but offsets/types give " +
-                              std::to_string(d_.offsets.size()) + "/" + std::to_string(d_.types.size()));
+                              std::to_string(d_.offsets.size()) + "/" +
+                              std::to_string(d_.types.size()));
     if (!d_.surface.empty() && d_.surface.size() != nc)
       fail(d_.surface_line, "cell data \"surface\" must have one value per cell");
     if (!d_.region.empty() && d_.region.size() != nc)
@@ -321,15 +479,15 @@ class VtuParser {
     const long long np = static_cast<long long>(d_.points.size());
     for (long long v : d_.connectivity)
       if (v < 0 || v >= np)
-        fail(d_.connectivity_line, "cell connectivity refers to point " + std::to_string(v) + " but there are " +
-                                       std::to_string(np) + " points");
+        fail(d_.connectivity_line, "cell connectivity refers to point " + std::to_string(v) +
+                                       " but there are " + std::to_string(np) + " points");
   }
 
-  const std::string& source_name() const { return name_; }
-
   XmlScanner xml_;
-  VtuData d_;
   std::string name_;
+  BinaryLayout layout_;
+  ArrayRef points_, connectivity_, offsets_, types_, surface_, region_;
+  VtuData d_;
 };
 
 struct VtuCells {
@@ -348,8 +506,9 @@ VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
     const long long type = d.types[k];
     auto need = [&](long long expected) {
       if (n != expected)
-        throw InputError(file, d.types_line, "cell " + std::to_string(k) + " of type " + std::to_string(type) +
-                                                 " has " + std::to_string(n) + " points");
+        throw InputError(file, d.types_line,
+                         "cell " + std::to_string(k) + " of type " + std::to_string(type) +
+                             " has " + std::to_string(n) + " points");
     };
     const long long surface = d.surface.empty() ? 0 : d.surface[k];
     if (type == kTriangle || type == kQuad || type == kPolygon) {
@@ -357,13 +516,15 @@ VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
       if (type == kQuad) need(4);
       if (n < 3) need(3);
       for (long long i = 1; i + 1 < n; ++i) {
-        c.triangles.push_back({static_cast<int>(v[0]), static_cast<int>(v[i]), static_cast<int>(v[i + 1])});
+        c.triangles.push_back(
+            {static_cast<int>(v[0]), static_cast<int>(v[i]), static_cast<int>(v[i + 1])});
         c.triangle_surface.push_back(surface);
       }
     } else if (type == kTetra) {
       need(4);
       if (volume) {
-        c.tets.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])});
+        c.tets.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]),
+                          static_cast<int>(v[3])});
         c.tet_region.push_back(d.region.empty() ? 0 : d.region[k]);
       }
     } else if (type != 1 && type != 2 && type != 3 && type != 4) {
@@ -373,66 +534,180 @@ VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
   return c;
 }
 
-std::vector<int> checked_ids(const std::vector<long long>& ids, const std::string& file, long line, const char* what,
-                             std::vector<std::string>* names) {
+std::vector<int> checked_ids(const std::vector<long long>& ids, const std::string& file, long line,
+                             const char* what, std::vector<std::string>* names) {
   std::vector<int> out;
   long long hi = -1;
   for (long long id : ids) {
-    if (id < 0 || id > kMaxId) throw InputError(file, line, std::string(what) + " id " + std::to_string(id) + " out of range");
+    if (id < 0 || id > kMaxId)
+      throw InputError(file, line,
+                       std::string(what) + " id " + std::to_string(id) + " out of range");
     hi = std::max(hi, id);
     out.push_back(static_cast<int>(id));
   }
   if (names)
-    for (long long i = 0; i <= hi; ++i) names->push_back(std::string(what) + "_" + std::to_string(i));
+    for (long long i = 0; i <= hi; ++i)
+      names->push_back(std::string(what) + "_" + std::to_string(i));
   return out;
 }
 
-void write_header(std::ostream& out, size_t points, size_t cells) {
+void write_header(std::ostream& out, size_t points, size_t cells, bool ascii) {
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\""
+      << (ascii ? "" : " compressor=\"vtkZLibDataCompressor\"") << ">\n"
       << "  <UnstructuredGrid>\n"
       << "    <Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
 }
 
-void write_points(std::ostream& out, const std::vector<Vec3>& local, const Vec3& origin, int precision) {
-  out << "      <Points>\n        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
-  for (const Vec3& v : local) {
-    const Vec3 x = v + origin;
-    out << "          " << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision}
-        << '\n';
-  }
-  out << "        </DataArray>\n      </Points>\n";
+// One inline DataArray of `values`, zlib-compressed and base64-encoded as VTK writes it.
+template <class T>
+void write_binary(std::ostream& out, const std::string& attributes, const std::vector<T>& values) {
+  const std::vector<unsigned char> bytes = little_endian_bytes(values);
+  out << "        <DataArray " << attributes << " format=\"binary\">\n          "
+      << vtk_zlib_base64(bytes.data(), bytes.size()) << "\n        </DataArray>\n";
 }
 
-template <class Cells>
-void write_cells(std::ostream& out, const std::vector<Triangle>& triangles, const Cells& tets) {
-  out << "      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const Triangle& t : triangles) out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  for (const Tetrahedron& t : tets) out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+void write_points(std::ostream& out, const std::vector<Vec3>& local, const Vec3& origin,
+                  int precision, bool ascii) {
+  out << "      <Points>\n";
+  const char* attributes = "type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"";
+  if (ascii) {
+    out << "        <DataArray " << attributes << " format=\"ascii\">\n";
+    for (const Vec3& v : local) {
+      const Vec3 x = v + origin;
+      out << "          " << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' '
+          << Real{x.z(), precision} << '\n';
+    }
+    out << "        </DataArray>\n";
+  } else {
+    std::vector<double> xyz;
+    xyz.reserve(3 * local.size());
+    for (const Vec3& v : local) {
+      const Vec3 x = v + origin;
+      xyz.insert(xyz.end(), {x.x(), x.y(), x.z()});
+    }
+    write_binary(out, attributes, xyz);
+  }
+  out << "      </Points>\n";
+}
+
+void write_cells_ascii(std::ostream& out, const std::vector<Triangle>& triangles,
+                       const std::vector<Tetrahedron>& tets) {
+  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const Triangle& t : triangles)
+    out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  for (const Tetrahedron& t : tets)
+    out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
   long long offset = 0;
   for (size_t i = 0; i < triangles.size(); ++i) out << "          " << (offset += 3) << '\n';
   for (size_t i = 0; i < tets.size(); ++i) out << "          " << (offset += 4) << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
+         "format=\"ascii\">\n";
   for (size_t i = 0; i < triangles.size(); ++i) out << "          " << kTriangle << '\n';
   for (size_t i = 0; i < tets.size(); ++i) out << "          " << kTetra << '\n';
-  out << "        </DataArray>\n      </Cells>\n";
+  out << "        </DataArray>\n";
 }
 
-void write_ints(std::ostream& out, const char* name, const std::vector<int>& values) {
-  out << "        <DataArray type=\"Int32\" Name=\"" << name << "\" format=\"ascii\">\n";
+void write_cells_binary(std::ostream& out, const std::vector<Triangle>& triangles,
+                        const std::vector<Tetrahedron>& tets) {
+  std::vector<int64_t> connectivity, offsets;
+  std::vector<uint8_t> types;
+  connectivity.reserve(3 * triangles.size() + 4 * tets.size());
+  for (const Triangle& t : triangles) {
+    connectivity.insert(connectivity.end(), {t[0], t[1], t[2]});
+    offsets.push_back(static_cast<int64_t>(connectivity.size()));
+    types.push_back(kTriangle);
+  }
+  for (const Tetrahedron& t : tets) {
+    connectivity.insert(connectivity.end(), {t[0], t[1], t[2], t[3]});
+    offsets.push_back(static_cast<int64_t>(connectivity.size()));
+    types.push_back(kTetra);
+  }
+  write_binary(out, "type=\"Int64\" Name=\"connectivity\"", connectivity);
+  write_binary(out, "type=\"Int64\" Name=\"offsets\"", offsets);
+  write_binary(out, "type=\"UInt8\" Name=\"types\"", types);
+}
+
+void write_cells(std::ostream& out, const std::vector<Triangle>& triangles,
+                 const std::vector<Tetrahedron>& tets, bool ascii) {
+  out << "      <Cells>\n";
+  if (ascii)
+    write_cells_ascii(out, triangles, tets);
+  else
+    write_cells_binary(out, triangles, tets);
+  out << "      </Cells>\n";
+}
+
+void write_ints(std::ostream& out, const char* name, const std::vector<int>& values, bool ascii) {
+  const std::string attributes = std::string("type=\"Int32\" Name=\"") + name + "\"";
+  if (!ascii) return write_binary(out, attributes, values);
+  out << "        <DataArray " << attributes << " format=\"ascii\">\n";
   for (int v : values) out << "          " << v << '\n';
   out << "        </DataArray>\n";
 }
 
-void write_reals(std::ostream& out, const char* name, const std::vector<double>& values) {
+// Qualities are a diagnostic: 9 digits in ASCII, Float32 in binary.
+void write_reals(std::ostream& out, const char* name, const std::vector<double>& values,
+                 bool ascii) {
+  if (!ascii) {
+    const std::vector<float> single(values.begin(), values.end());
+    return write_binary(out, std::string("type=\"Float32\" Name=\"") + name + "\"", single);
+  }
   out << "        <DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
   for (double v : values) out << "          " << Real{v, 9} << '\n';
   out << "        </DataArray>\n";
 }
 
-void write_footer(std::ostream& out) { out << "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n"; }
+void write_footer(std::ostream& out) {
+  out << "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+}
+
+void write_model_vtu(const StructuralModel& model, std::ostream& out, int precision, bool ascii) {
+  const ModelTriangles t = flatten(model);
+  write_header(out, model.vertices.size(), t.triangles.size(), ascii);
+  write_points(out, model.vertices, model.frame.origin, precision, ascii);
+  write_cells(out, t.triangles, {}, ascii);
+  out << "      <CellData Scalars=\"surface\">\n";
+  write_ints(out, "surface", t.part, ascii);
+  std::vector<double> quality;
+  quality.reserve(t.triangles.size());
+  for (const Triangle& f : t.triangles)
+    quality.push_back(
+        measure_triangle(model.vertices[f[0]], model.vertices[f[1]], model.vertices[f[2]]).q);
+  write_reals(out, "quality", quality, ascii);
+  out << "      </CellData>\n";
+  write_footer(out);
+}
+
+void write_volume_vtu(const VolumeMesh& mesh, std::ostream& out, int precision, bool ascii) {
+  const std::vector<Vec3>& v = mesh.vertices;
+  write_header(out, v.size(), mesh.triangles.size() + mesh.tets.size(), ascii);
+  write_points(out, v, mesh.frame.origin, precision, ascii);
+  write_cells(out, mesh.triangles, mesh.tets, ascii);
+  std::vector<int> surface, region;
+  std::vector<double> quality;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    surface.push_back(f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0);
+    region.push_back(-1);
+    const Triangle& t = mesh.triangles[f];
+    quality.push_back(measure_triangle(v[t[0]], v[t[1]], v[t[2]]).q);
+  }
+  for (size_t k = 0; k < mesh.tets.size(); ++k) {
+    surface.push_back(-1);
+    region.push_back(k < mesh.tet_region.size() ? mesh.tet_region[k] : 0);
+    const Tetrahedron& t = mesh.tets[k];
+    quality.push_back(tet_quality(v[t[0]], v[t[1]], v[t[2]], v[t[3]]));
+  }
+  out << "      <CellData Scalars=\"region\">\n";
+  write_ints(out, "surface", surface, ascii);
+  write_ints(out, "region", region, ascii);
+  write_reals(out, "quality", quality, ascii);
+  out << "      </CellData>\n";
+  write_footer(out);
+}
 
 }  // namespace
 
@@ -466,46 +741,19 @@ VolumeMesh read_vtu_volume(const TextSource& source) {
 }
 
 void write_vtu(const StructuralModel& model, std::ostream& out, int precision) {
-  const ModelTriangles t = flatten(model);
-  write_header(out, model.vertices.size(), t.triangles.size());
-  write_points(out, model.vertices, model.frame.origin, precision);
-  write_cells(out, t.triangles, std::vector<Tetrahedron>{});
-  out << "      <CellData Scalars=\"surface\">\n";
-  write_ints(out, "surface", t.part);
-  std::vector<double> quality;
-  quality.reserve(t.triangles.size());
-  for (const Triangle& f : t.triangles)
-    quality.push_back(measure_triangle(model.vertices[f[0]], model.vertices[f[1]], model.vertices[f[2]]).q);
-  write_reals(out, "quality", quality);
-  out << "      </CellData>\n";
-  write_footer(out);
+  write_model_vtu(model, out, precision, false);
 }
 
 void write_vtu_volume(const VolumeMesh& mesh, std::ostream& out, int precision) {
-  const std::vector<Vec3>& v = mesh.vertices;
-  write_header(out, v.size(), mesh.triangles.size() + mesh.tets.size());
-  write_points(out, v, mesh.frame.origin, precision);
-  write_cells(out, mesh.triangles, mesh.tets);
-  std::vector<int> surface, region;
-  std::vector<double> quality;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    surface.push_back(f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0);
-    region.push_back(-1);
-    const Triangle& t = mesh.triangles[f];
-    quality.push_back(measure_triangle(v[t[0]], v[t[1]], v[t[2]]).q);
-  }
-  for (size_t k = 0; k < mesh.tets.size(); ++k) {
-    surface.push_back(-1);
-    region.push_back(k < mesh.tet_region.size() ? mesh.tet_region[k] : 0);
-    const Tetrahedron& t = mesh.tets[k];
-    quality.push_back(tet_quality(v[t[0]], v[t[1]], v[t[2]], v[t[3]]));
-  }
-  out << "      <CellData Scalars=\"region\">\n";
-  write_ints(out, "surface", surface);
-  write_ints(out, "region", region);
-  write_reals(out, "quality", quality);
-  out << "      </CellData>\n";
-  write_footer(out);
+  write_volume_vtu(mesh, out, precision, false);
+}
+
+void write_vtu_ascii(const StructuralModel& model, std::ostream& out, int precision) {
+  write_model_vtu(model, out, precision, true);
+}
+
+void write_vtu_volume_ascii(const VolumeMesh& mesh, std::ostream& out, int precision) {
+  write_volume_vtu(mesh, out, precision, true);
 }
 
 }  // namespace voroseal

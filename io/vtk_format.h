@@ -1,10 +1,16 @@
-// VTK XML UnstructuredGrid (.vtu), ASCII data arrays (internal to voroseal_io).
+// VTK XML UnstructuredGrid (.vtu) (internal to voroseal_io).
 //
 // Written: points (file coordinates), triangles (type 5) and tetrahedra (type 10), cell data
 // "surface" (surface id, -1 on tets), "region" (region id, -1 on triangles; volume meshes
 // only) and "quality" (triangle Q = 6S/(sqrt(3) h_max p); tet 6 sqrt(2) V / l_rms^3).
-// Read: one Piece with ASCII DataArrays; triangles, quads (split), polygons (fan) and tets;
-// vertex and line cells are ignored, other cells are refused.
+// write_vtu*() write every DataArray inline as format="binary" compressed with
+// vtkZLibDataCompressor and header_type UInt64 (coordinates exact in Float64, quality in
+// Float32); write_vtu*_ascii() write format="ascii" text.
+// Read: one Piece with DataArrays in any encoding VTK writes: ascii, binary (inline base64),
+// appended (raw or base64 <AppendedData>), with a UInt32 or UInt64 header, uncompressed or
+// vtkZLibDataCompressor; types Int8..UInt64, Float32, Float64; LittleEndian only. Triangles,
+// quads (split), polygons (fan) and tets; vertex and line cells are ignored, other cells are
+// refused.
 #pragma once
 
 #include <ostream>
@@ -21,7 +27,11 @@ SurfaceSoup read_vtu(const TextSource& source);
 /// \throws InputError
 VolumeMesh read_vtu_volume(const TextSource& source);
 
+/// Zlib-compressed binary DataArrays (coordinates exact: `precision` is not used).
 void write_vtu(const StructuralModel& model, std::ostream& out, int precision);
 void write_vtu_volume(const VolumeMesh& mesh, std::ostream& out, int precision);
+/// ASCII DataArrays, coordinates with `precision` significant digits.
+void write_vtu_ascii(const StructuralModel& model, std::ostream& out, int precision);
+void write_vtu_volume_ascii(const VolumeMesh& mesh, std::ostream& out, int precision);
 
 }  // namespace voroseal
