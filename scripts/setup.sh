@@ -12,7 +12,7 @@ required=(
   pybind11-dev python3-dev python3-numpy zlib1g-dev
 )
 # snakemake: runs studies as workflows (docs/studies.md); its test is skipped without it.
-optional=(libceres-dev snakemake)
+optional=(libceres-dev snakemake gmsh python3-meshio)  # gmsh, meshio: .msh files for io tests
 
 missing=()
 for p in "${required[@]}" "${optional[@]}"; do

@@ -383,8 +383,10 @@ const std::string kMsh =
 
 TEST(MalformedInput, Gmsh) {
   const std::vector<Broken> cases = {
-      {"version 2.2", replace(kMsh, 2, "2.2 0 8"), 2, "only MSH version 4.1"},
-      {"binary", replace(kMsh, 2, "4.1 1 8"), 2, "binary .msh files are not supported"},
+      {"version 2.2 with a 4.1 body", replace(kMsh, 2, "2.2 0 8"), 8,
+       "$Entities is a MSH 4 section"},
+      {"binary flag on a text file", replace(kMsh, 2, "4.1 1 8"), 2,
+       "expected the binary integer 1"},
       {"no $MeshFormat first", replace(kMsh, 1, "$Nodes"), 1, "must start with $MeshFormat"},
       {"empty file", "", 0, "no $MeshFormat"},
       {"not a section", replace(kMsh, 4, "PhysicalNames"), 4, "expected a section"},
