@@ -352,6 +352,7 @@ int run_command_line(ModuleRegistry& registry, int argc, char** argv) {
       CLI::Option* o = c.app->add_option(names, c.values[spec.name], doc);
       o->type_name(type_text(spec));
       if (spec.required) o->required();
+      if (spec.repeatable) o->multi_option_policy(CLI::MultiOptionPolicy::Join);
     }
   }
 

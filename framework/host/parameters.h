@@ -30,6 +30,8 @@ struct ParameterSpec {
   bool output = false;
   /// The extensions (".obj", lower case) an output can have; empty: any.
   std::vector<std::string> extensions;
+  /// A String parameter the command line takes several times: the values join, one per line.
+  bool repeatable = false;
 };
 
 /// Values of a module's parameters, validated against the specs.

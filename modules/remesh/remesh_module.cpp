@@ -239,6 +239,15 @@ class RemeshModule final : public Module {
                      "with --thin-layers: cells at most this many times the length of a contact shorter than a cell "
                      "(0: off)",
                      0.0, 100.0));
+    ParameterSpec size = spec("size", ParameterType::String, nullptr,
+                              "target edge length on some surfaces, NAME=H (repeatable, or "
+                              "comma-separated): a surface, region or layer name (globs), or "
+                              "kind:fault, kind:horizon, kind:boundary; the smallest size wins");
+    size.repeatable = true;
+    p.push_back(size);
+    p.push_back(spec("gradation", ParameterType::Double, SeedOptions{}.gradation,
+                     "with --size: sizes change by at most this factor between neighbouring cells",
+                     1.01, 10.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
                      "zip into one surface from the pinch-out on, so that a tet mesh has no flat tets there "
@@ -291,6 +300,14 @@ class RemeshModule final : public Module {
       asked = text;
     } else {
       throw ParameterError("remesh: give --edge-length or --seeds");
+    }
+    options.gradation = parameters.get_double("gradation");
+    if (parameters.has("size")) {
+      // The sizes change the seed count: the estimate counts the seeds they need.
+      options.sizes = parse_size_rules(parameters.get_string("size"));
+      const double h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));
+      seed_count *= surface_sizing(*context.model, options.sizes, h, options.gradation).seed_factor;
+      asked += " with --size (" + std::to_string(std::lround(seed_count)) + " seeds)";
     }
     require_memory(
         context,
@@ -400,6 +417,7 @@ class RemeshModule final : public Module {
                                {"thinnest", std::isfinite(r.thinnest_layer) ? nlohmann::json(r.thinnest_layer)
                                                                             : nlohmann::json()},
                                {"edge_length", r.edge_length}};
+    if (!options.sizes.empty()) report["sizes"] = sizes_json(input, result.model, r, context.log);
     report["refinement"] = refinement_json(result.refinement);
     // The seeds the kept remesh has more than the first one.
     report["repair_refinement"] = {
@@ -521,6 +539,29 @@ class RemeshModule final : public Module {
   }
 
  private:
+  // Per input surface: the size asked (its rule's, else the resolution's) against the mean edge
+  // length of its counterpart in the output; logged and reported.
+  static nlohmann::json sizes_json(const StructuralModel& input, const StructuralModel& output,
+                                   const SeedOptimizationResult& seeds, Logger& log) {
+    const std::vector<double> realised = mean_edge_per_interface(output);
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (size_t i = 0; i < input.interfaces.size() && i < seeds.interface_size.size(); ++i) {
+      const std::string& name = input.interfaces[i].name;
+      double edge = 0.0;
+      for (size_t o = 0; o < output.interfaces.size(); ++o)
+        if (output.interfaces[o].name == name) edge = realised[o];
+      const double asked = seeds.interface_size[i], target = seeds.interface_target[i];
+      surfaces.push_back(
+          {{"name", name}, {"asked", asked}, {"graded", target}, {"realised", edge}});
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "remesh: size on %s: asked %.4g, %.4g once graded, mean edge %.4g (%+.1f %%)",
+                    name.c_str(), asked, target, edge, 100.0 * (edge / target - 1.0));
+      log.info(line);
+    }
+    return {{"edge_length", seeds.edge_length}, {"surfaces", std::move(surfaces)}};
+  }
+
   static nlohmann::json refinement_json(const BallRefinementResult& refinement) {
     nlohmann::json rounds = nlohmann::json::array();
     for (const BallRefinementRound& r : refinement.rounds)

@@ -21,8 +21,8 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   const auto t0 = Clock::now();
   ProgressStep step(progress, "remesh: seed sampling");
   std::vector<double> density = options.vertex_density;
-  if (options.thin_layers && !density.empty())
-    throw ParameterError("remesh: a density and the thin-layer sizing exclude each other");
+  if ((options.thin_layers || !options.sizes.empty()) && !density.empty())
+    throw ParameterError("remesh: a density and the sizings exclude each other");
   ModelGeometry geometry(model, density);
   int n = options.num_seeds;
   if (n <= 0) {
@@ -33,16 +33,31 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   const int base_seeds = n;
   char line[400];
   LayerSizing layers;
-  if (options.thin_layers) {
-    const double h = edge_length_for_seeds(geometry.area(), n);
-    layers = thin_layer_sizing(model, h, options.layer_sizing);
+  SurfaceSizing sized;
+  const double h = edge_length_for_seeds(geometry.area(), n);
+  if (!options.sizes.empty()) sized = surface_sizing(model, options.sizes, h, options.gradation);
+  if (options.thin_layers) layers = thin_layer_sizing(model, h, options.layer_sizing);
+  std::vector<double> size = sized.size;
+  if (layers.refines()) {
+    if (size.empty()) size = layers.size;
+    for (size_t v = 0; v < size.size(); ++v) size[v] = std::min(size[v], layers.size[v]);
+  }
+  if (!size.empty()) {
+    density = density_from_sizing(size, h);
+    geometry = ModelGeometry(model, density);
+    // As many seeds where ρ = 1 as the resolution asks for: N follows ∫√ρ / area.
+    const double seeds =
+        std::round(static_cast<double>(n) * geometry.root_mass() / geometry.area());
+    if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the sizes give too many seeds");
+    const int before = n;
+    n = std::max(1, static_cast<int>(seeds));
+    if (!options.sizes.empty()) {
+      std::snprintf(line, sizeof line,
+                    "remesh: sizes: %zu rules, graded by %.3g, %d seeds instead of %d",
+                    options.sizes.size(), options.gradation, n, before);
+      log.info(line);
+    }
     if (layers.refines()) {
-      density = density_from_sizing(layers.size, h);
-      geometry = ModelGeometry(model, density);
-      // As many seeds where ρ = 1 as the resolution asks for: N grows by ∫√ρ / area.
-      const double seeds = std::round(static_cast<double>(n) * geometry.root_mass() / geometry.area());
-      if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the thin-layer sizing gives too many seeds");
-      n = std::max(n, static_cast<int>(seeds));
       const Vec3 at = layers.thinnest_at + model.frame.origin;
       char thinnest[160] = "all next to pinch-outs";
       if (std::isfinite(layers.thinnest))
@@ -70,6 +85,8 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   result.pinch_vertices = layers.pinch_vertices;
   result.short_contacts = layers.short_contacts;
   result.thinnest_layer = layers.thinnest;
+  result.interface_size = std::move(sized.interface_size);
+  result.interface_target = std::move(sized.interface_target);
   return result;
 }
 

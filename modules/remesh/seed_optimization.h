@@ -14,6 +14,7 @@
 #include "modules/remesh/layer_sizing.h"
 #include "modules/remesh/model_geometry.h"
 #include "modules/remesh/optimizer.h"
+#include "modules/remesh/surface_sizing.h"
 
 namespace voroseal {
 
@@ -26,6 +27,11 @@ struct SeedOptions {
   /// vertex_density.
   bool thin_layers = false;
   LayerSizingOptions layer_sizing;
+  /// Sizes per surface, region or kind (surface_sizing.h), graded by `gradation`; with the
+  /// thin-layer sizing the smaller size wins. The seed count follows: as many seeds where the
+  /// size is the resolution's as it asks for. Not with a vertex_density.
+  std::vector<SizeRule> sizes;
+  double gradation = 1.3;
   std::uint64_t random_seed = 1;       // initial sampling
   OptimizerOptions optimizer;          // kind, iterations (default 100), gradient threshold
   /// α in F = (1 − α) F_CVT + α F_B. Negative: from the gradient-norm ratio at the initial
@@ -45,6 +51,9 @@ struct SeedOptimizationResult {
   int thin_layer_samples = 0, pinch_vertices = 0;
   int short_contacts = 0;  // contacts shorter than a cell, refined (thin-layer sizing)
   double thinnest_layer = std::numeric_limits<double>::infinity();  // away from pinch-out tips
+  /// With sizes: the size asked for each interface (its smallest rule, else the resolution's).
+  std::vector<double> interface_size;
+  std::vector<double> interface_target;  // and the mean size its cells get once graded
   double alpha = 0.0;                // the boundary weight used
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;

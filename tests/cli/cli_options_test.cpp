@@ -4,6 +4,8 @@
 
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/cli/cli_run.h"
 
 namespace voroseal::test {
@@ -82,6 +84,31 @@ TEST(CliOptions, RunsThatCannotFitInMemoryAreRefusedBeforeTheyStart) {
   EXPECT_EQ(tight.exit_code, 2) << tight.err;
   EXPECT_NE(tight.err.find("--max-memory (1 KB)"), std::string::npos) << tight.err;
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"box.ts"});
+}
+
+// --size is repeatable: every rule given applies, and the report says so per surface.
+TEST(CliOptions, EveryGivenSizeRuleApplies) {
+  CliDir dir("cli_size_rules");
+  const std::string model = dir / "box.ts";
+  write_box_model(model, 6);
+  const CliResult r =
+      run_voroseal({"--json", "-q", "remesh", model, "--seeds", "300", "-o", dir / "r.obj",
+                    "--size", "horizon=0.1", "--size", "zmin=0.12,zmax=0.12"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  int sized = 0;
+  for (const nlohmann::json& s : report.at("remesh").at("sizes").at("surfaces")) {
+    const std::string name = s.at("name");
+    const double asked = s.at("asked");
+    if (name == "horizon") EXPECT_EQ(asked, 0.1);
+    if (name == "zmin" || name == "zmax") EXPECT_EQ(asked, 0.12);
+    sized += name == "horizon" || name == "zmin" || name == "zmax";
+  }
+  EXPECT_EQ(sized, 3);
+  const CliResult bad =
+      run_voroseal({"remesh", model, "--seeds", "300", "-o", dir / "s.obj", "--size", "x=1"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--size: 'x' names no surface"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -140,6 +140,35 @@ TEST(RemeshModule, ThinLayersAddSeedsOnTheLayerAndReportThem) {
   EXPECT_THROW(run({{"thin-layers", true}, {"corner-ratio", -1.0}}), ParameterError);
 }
 
+TEST(RemeshModule, SizesPerSurfaceAreRealisedAndReported) {
+  // The horizon of a box at half the size of the rest: more seeds, and each surface's mean edge
+  // near the size asked for it once graded.
+  auto run = [](nlohmann::json extra) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    harness.context.model =
+        std::make_shared<StructuralModel>(build_model(test::lattice_box(8, true)));
+    nlohmann::json values = {{"edge-length", 0.2}};
+    values.update(extra);
+    harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
+    return harness.context.report.at("remesh");
+  };
+  const nlohmann::json plain = run(nlohmann::json::object());
+  EXPECT_FALSE(plain.contains("sizes"));
+  const nlohmann::json sized = run({{"size", "horizon=0.1"}});
+  EXPECT_GT(sized.at("seeds").get<int>(), plain.at("seeds").get<int>());
+  EXPECT_TRUE(sized.at("valid").get<bool>());
+  EXPECT_TRUE(sized.at("topology").at("regions_preserved").get<bool>());
+  const nlohmann::json& surfaces = sized.at("sizes").at("surfaces");
+  ASSERT_EQ(surfaces.size(), 7u);
+  for (const nlohmann::json& s : surfaces) {
+    const double graded = s.at("graded").get<double>();
+    EXPECT_NEAR(s.at("realised").get<double>(), graded, 0.2 * graded) << s.dump();
+    if (s.at("name") == "horizon") EXPECT_EQ(s.at("asked").get<double>(), 0.1);
+  }
+  EXPECT_THROW(run({{"size", "nothing=0.1"}}), ParameterError);
+  EXPECT_THROW(run({{"size", "horizon"}}), ParameterError);
+}
+
 TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
   // A tongue 0.01 thick under cells of about 0.15 (d_min 0.02): --zip-pinch-outs closes it; a
   // --zip-wedge under the tongue's wedges (about 4 deg at its tip) leaves it open.

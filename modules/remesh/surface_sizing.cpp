@@ -1,0 +1,225 @@
+#include "modules/remesh/surface_sizing.h"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "framework/core/edge_key.h"
+#include "framework/core/error.h"
+
+namespace voroseal {
+
+namespace {
+
+constexpr const char* kKindPrefix = "kind:";
+
+std::string trimmed(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+bool glob_matches(const std::string& pattern, const std::string& name) {
+  return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
+}
+
+// The parts a rule names: by kind, by interface or part name, or the parts bounding a named
+// region or layer.
+std::vector<int> parts_named(const StructuralModel& model, const std::string& pattern) {
+  std::vector<char> named(model.parts.size(), 0);
+  auto region_parts = [&](int r) {
+    for (const Side& s : model.regions[r].sides) named[s.part] = 1;
+  };
+  if (pattern.rfind(kKindPrefix, 0) == 0) {
+    const std::string kind = pattern.substr(std::string(kKindPrefix).size());
+    for (const Interface& i : model.interfaces)
+      if (glob_matches(kind, to_string(i.kind)))
+        for (int p : i.parts) named[p] = 1;
+  } else {
+    for (const Interface& i : model.interfaces)
+      if (glob_matches(pattern, i.name))
+        for (int p : i.parts) named[p] = 1;
+    for (size_t p = 0; p < model.parts.size(); ++p)
+      if (glob_matches(pattern, model.parts[p].name)) named[p] = 1;
+    for (size_t r = 0; r < model.regions.size(); ++r)
+      if (glob_matches(pattern, model.regions[r].name)) region_parts(static_cast<int>(r));
+    for (const Layer& l : model.layers)
+      if (glob_matches(pattern, l.name))
+        for (int r : l.regions) region_parts(r);
+  }
+  std::vector<int> parts;
+  for (size_t p = 0; p < named.size(); ++p)
+    if (named[p]) parts.push_back(static_cast<int>(p));
+  return parts;
+}
+
+std::string known_names(const StructuralModel& model) {
+  std::string s;
+  auto add = [&](const std::string& n) {
+    if (s.size() < 400) s += (s.empty() ? "" : ", ") + n;
+  };
+  for (const Interface& i : model.interfaces) add(i.name);
+  for (const Region& r : model.regions) add(r.name);
+  for (const Layer& l : model.layers) add(l.name);
+  return s.size() >= 400 ? s + ", ..." : s;
+}
+
+}  // namespace
+
+std::vector<SizeRule> parse_size_rules(const std::string& text) {
+  std::vector<SizeRule> rules;
+  size_t begin = 0;
+  while (begin <= text.size()) {
+    const size_t end = std::min(text.find_first_of(",\n", begin), text.size());
+    const std::string item = trimmed(text.substr(begin, end - begin));
+    begin = end + 1;
+    if (item.empty()) continue;
+    const size_t eq = item.rfind('=');
+    const std::string bad = "parameter --size: '" + item + "' ";
+    if (eq == std::string::npos || eq == 0)
+      throw ParameterError(bad + "is not NAME=H (a surface, region or layer name, or kind:fault)");
+    const std::string number = trimmed(item.substr(eq + 1));
+    char* stop = nullptr;
+    const double h = std::strtod(number.c_str(), &stop);
+    if (number.empty() || *stop != '\0' || !std::isfinite(h) || !(h > 0.0))
+      throw ParameterError(bad + "needs a positive size after '='");
+    rules.push_back({trimmed(item.substr(0, eq)), h});
+  }
+  return rules;
+}
+
+void grade_sizes_along_edges(const StructuralModel& model, double slope,
+                             std::vector<double>& size) {
+  const ModelTriangles flat = flatten(model);
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * flat.triangles.size());
+  for (const Triangle& t : flat.triangles)
+    for (int k = 0; k < 3; ++k) edges.push_back(edge_key(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // Compressed adjacency: the neighbours of v are next[first[v] .. first[v + 1]).
+  std::vector<int> first(size.size() + 1, 0), next(2 * edges.size());
+  for (std::uint64_t e : edges) {
+    ++first[edge_key_first(e) + 1];
+    ++first[edge_key_second(e) + 1];
+  }
+  for (size_t v = 0; v < size.size(); ++v) first[v + 1] += first[v];
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (std::uint64_t e : edges) {
+    const int a = edge_key_first(e), b = edge_key_second(e);
+    next[fill[a]++] = b;
+    next[fill[b]++] = a;
+  }
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (size_t v = 0; v < size.size(); ++v) queue.push({size[v], static_cast<int>(v)});
+  while (!queue.empty()) {
+    const auto [s, u] = queue.top();
+    queue.pop();
+    if (s > size[u]) continue;  // a stale entry
+    for (int k = first[u]; k < first[u + 1]; ++k) {
+      const int v = next[k];
+      const double graded = s + slope * (model.vertices[v] - model.vertices[u]).norm();
+      if (graded < size[v]) {
+        size[v] = graded;
+        queue.push({graded, v});
+      }
+    }
+  }
+}
+
+std::vector<double> mean_edge_per_interface(const StructuralModel& model) {
+  const ModelTriangles flat = flatten(model);
+  std::vector<std::pair<int, std::uint64_t>> edges;  // (interface, edge)
+  edges.reserve(3 * flat.triangles.size());
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    const int i = model.parts[flat.part[t]].interface;
+    if (i < 0) continue;
+    const Triangle& f = flat.triangles[t];
+    for (int k = 0; k < 3; ++k) edges.push_back({i, edge_key(f[k], f[(k + 1) % 3])});
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<double> sum(model.interfaces.size(), 0.0);
+  std::vector<long> count(model.interfaces.size(), 0);
+  for (const auto& [i, e] : edges) {
+    sum[i] += (model.vertices[edge_key_first(e)] - model.vertices[edge_key_second(e)]).norm();
+    ++count[i];
+  }
+  for (size_t i = 0; i < sum.size(); ++i) sum[i] = count[i] > 0 ? sum[i] / count[i] : 0.0;
+  return sum;
+}
+
+SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<SizeRule>& rules,
+                             double h, double gradation) {
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw ParameterError("remesh: the edge length must be positive");
+  if (!(gradation >= 1.0) || !std::isfinite(gradation))
+    throw ParameterError("parameter --gradation: must be at least 1");
+  constexpr double kUnset = std::numeric_limits<double>::infinity();
+  SurfaceSizing sizing;
+  sizing.size.assign(model.vertices.size(), kUnset);
+  std::vector<char> ruled(model.parts.size(), 0);
+  sizing.interface_size.assign(model.interfaces.size(), kUnset);
+  for (const SizeRule& rule : rules) {
+    const std::vector<int> parts = parts_named(model, rule.pattern);
+    if (parts.empty())
+      throw ParameterError("parameter --size: '" + rule.pattern + "' names no surface, region or " +
+                           "layer of the model (it has " + known_names(model) + ")");
+    std::vector<char> sized(model.interfaces.size(), 0);
+    for (int p : parts) {
+      const SurfacePart& part = model.parts[p];
+      ruled[p] = 1;
+      for (int v : part.model_vertex) sizing.size[v] = std::min(sizing.size[v], rule.size);
+      if (part.interface >= 0) {
+        double& s = sizing.interface_size[part.interface];
+        s = std::min(s, rule.size);
+        sized[part.interface] = 1;
+      }
+    }
+    sizing.rule_matches.push_back(static_cast<int>(std::count(sized.begin(), sized.end(), 1)));
+  }
+  for (double& s : sizing.interface_size)
+    if (!std::isfinite(s)) s = h;
+  // Surfaces no rule names keep h, also where they meet a surface sized coarser.
+  for (size_t p = 0; p < model.parts.size(); ++p)
+    if (!ruled[p])
+      for (int v : model.parts[p].model_vertex) sizing.size[v] = std::min(sizing.size[v], h);
+  for (double& s : sizing.size)
+    if (!std::isfinite(s)) s = h;
+  // A vertex shared by a fine and a coarse surface already has the fine size: the coarse
+  // surface then grades away from the contact.
+  grade_sizes_along_edges(model, gradation - 1.0, sizing.size);
+  std::vector<double> per_length(model.interfaces.size(), 0.0), per_area(per_length);
+  double area_sum = 0.0, cells = 0.0;
+  const ModelTriangles flat = flatten(model);
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    const Triangle& f = flat.triangles[t];
+    const Vec3 &a = model.vertices[f[0]], &b = model.vertices[f[1]], &c = model.vertices[f[2]];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    const double s = (sizing.size[f[0]] + sizing.size[f[1]] + sizing.size[f[2]]) / 3.0;
+    area_sum += area;
+    // The density is (h / s)^4, linear over the triangle; √ of its mean bounds the mean of √ρ.
+    double rho = 0.0;
+    for (int k = 0; k < 3; ++k) rho += std::pow(h / sizing.size[f[k]], 4) / 3.0;
+    cells += area * std::sqrt(rho);
+    const int i = model.parts[flat.part[t]].interface;
+    if (i < 0) continue;
+    per_length[i] += area / s;
+    per_area[i] += area / (s * s);
+  }
+  sizing.interface_target.resize(model.interfaces.size());
+  for (size_t i = 0; i < per_area.size(); ++i)
+    sizing.interface_target[i] = per_area[i] > 0.0 ? per_length[i] / per_area[i] : h;
+  if (area_sum > 0.0) sizing.seed_factor = cells / area_sum;
+  return sizing;
+}
+
+}  // namespace voroseal
