@@ -11,7 +11,8 @@ namespace voroseal {
 std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
                                           const StructuralModel& output, const std::vector<int>& input_part_of_output,
                                           const std::vector<int>& output_region_of_input,
-                                          const SurfaceProjector& projector, double resolution) {
+                                          const SurfaceProjector& projector, double resolution,
+                                          double min_feature) {
   std::vector<PocketRemoval> removed;
   std::vector<int> input_of_output(output.regions.size(), -1);
   for (size_t r = 0; r < output_region_of_input.size(); ++r)
@@ -125,6 +126,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
       break;
     }
     if (merged) continue;
+    const size_t removals_before = removed.size();
     for (const Side& x : sides) {
       // The region beyond x; the pocket joins it.
       const int q = beyond(x);
@@ -166,6 +168,18 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
       }
       break;
     }
+    if (removed.size() > removals_before || !(thickness < min_feature)) continue;
+    // Thinner than d_min: the largest side between it and an input region goes.
+    int best = -1;
+    for (size_t k = 0; k < sides.size(); ++k) {
+      const int q = beyond(sides[k]);
+      if (q < 0 || q == static_cast<int>(r) || input_of_output[q] < 0) continue;
+      if (best >= 0 && part_area[sides[k].part] <= part_area[sides[best].part]) continue;
+      if (leaves_no_border({sides[k].part})) best = static_cast<int>(k);
+    }
+    if (best >= 0)
+      remove_parts({sides[best].part}, input.regions[input_of_output[beyond(sides[best])]].name,
+                   volume, thickness);
   }
   if (!removed.empty()) surface.remove_triangles(dead);
   return removed;

@@ -38,12 +38,17 @@ struct PocketRemoval {
 ///    same region beyond (it becomes that part: the wedge between a horizon and a fault pinched
 ///    off at its tip joins the region beyond the horizon, and the fault piece around it becomes
 ///    the fault part there).
+/// A pocket thinner than `min_feature` (d_min) that none of these opens is a layer pinched
+/// off on purpose: a side between it and an input region goes even though the other sides keep
+/// their labels (a lens of a thin layer cut off by its two horizons touching joins the region
+/// beyond one of them).
 /// Nothing is removed that would leave an edge with a single triangle. Pockets with no such side
 /// are left (and reported as gained regions). `input_part_of_output` gives the input part of
 /// each output part.
 std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const StructuralModel& input,
                                           const StructuralModel& output, const std::vector<int>& input_part_of_output,
                                           const std::vector<int>& output_region_of_input,
-                                          const SurfaceProjector& projector, double resolution);
+                                          const SurfaceProjector& projector, double resolution,
+                                          double min_feature);
 
 }  // namespace voroseal

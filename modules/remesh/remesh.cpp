@@ -270,7 +270,8 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
     RemeshedSurface before = result.build.surface;
     const std::vector<PocketRemoval> removed =
         remove_pockets(result.build.surface, input, result.model, result.topology.input_part_of_output,
-                       result.topology.output_region_of_input, projector, resolution);
+                       result.topology.output_region_of_input, projector, resolution,
+                       result.min_feature);
     if (removed.empty()) break;
     TopologyReport topology;
     StructuralModel model = model_from_remeshed(result.build.surface, input, &topology, resolution);

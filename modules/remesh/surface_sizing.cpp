@@ -26,8 +26,8 @@ std::string trimmed(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-bool glob_matches(const std::string& pattern, const std::string& name) {
-  return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
+bool glob_matches(const std::string& pattern, const std::string& name, int flags = 0) {
+  return fnmatch(pattern.c_str(), name.c_str(), flags) == 0;
 }
 
 // The parts a rule names: by kind, by interface or part name, or the parts bounding a named
@@ -40,7 +40,7 @@ std::vector<int> parts_named(const StructuralModel& model, const std::string& pa
   if (pattern.rfind(kKindPrefix, 0) == 0) {
     const std::string kind = pattern.substr(std::string(kKindPrefix).size());
     for (const Interface& i : model.interfaces)
-      if (glob_matches(kind, to_string(i.kind)))
+      if (glob_matches(kind, to_string(i.kind), FNM_CASEFOLD))
         for (int p : i.parts) named[p] = 1;
   } else {
     for (const Interface& i : model.interfaces)
@@ -60,8 +60,18 @@ std::vector<int> parts_named(const StructuralModel& model, const std::string& pa
   return parts;
 }
 
-std::string known_names(const StructuralModel& model) {
+std::string known_names(const StructuralModel& model, const std::string& pattern) {
   std::string s;
+  if (pattern.rfind(kKindPrefix, 0) == 0) {
+    for (const SurfaceKind k : {SurfaceKind::Horizon, SurfaceKind::Fault, SurfaceKind::Boundary,
+                                SurfaceKind::Unconformity, SurfaceKind::Unknown})
+      for (const Interface& i : model.interfaces)
+        if (i.kind == k) {
+          s += std::string(s.empty() ? "" : ", ") + kKindPrefix + to_string(k);
+          break;
+        }
+    return s;
+  }
   auto add = [&](const std::string& n) {
     if (s.size() < 400) s += (s.empty() ? "" : ", ") + n;
   };
@@ -172,7 +182,7 @@ SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<Siz
     const std::vector<int> parts = parts_named(model, rule.pattern);
     if (parts.empty())
       throw ParameterError("parameter --size: '" + rule.pattern + "' names no surface, region or " +
-                           "layer of the model (it has " + known_names(model) + ")");
+                           "layer of the model (it has " + known_names(model, rule.pattern) + ")");
     std::vector<char> sized(model.interfaces.size(), 0);
     for (int p : parts) {
       const SurfacePart& part = model.parts[p];

@@ -50,8 +50,9 @@ struct BoxRemesh {
     TopologyReport first;
     const StructuralModel before = model_from_remeshed(surface, input, &first, 1.0);
     const SurfaceProjector projector(input);
-    const std::vector<PocketRemoval> removed = remove_pockets(surface, input, before, first.input_part_of_output,
-                                                              first.output_region_of_input, projector, resolution);
+    const std::vector<PocketRemoval> removed =
+        remove_pockets(surface, input, before, first.input_part_of_output,
+                       first.output_region_of_input, projector, resolution, 0.0);
     after = model_from_remeshed(surface, input, &report, 1.0);
     return removed;
   }
@@ -161,7 +162,8 @@ TEST(RemovePockets, TwoPocketsSideBySideBecomeOneThenGo) {
     const StructuralModel m = model_from_remeshed(box.surface, box.input, &t, 1.0);
     EXPECT_EQ(t.regions_gained.size(), round == 0 ? 2u : 1u) << "round " << round;
     const std::vector<PocketRemoval> r =
-        remove_pockets(box.surface, box.input, m, t.input_part_of_output, t.output_region_of_input, projector, 1.0);
+        remove_pockets(box.surface, box.input, m, t.input_part_of_output, t.output_region_of_input,
+                       projector, 1.0, 0.0);
     removed.insert(removed.end(), r.begin(), r.end());
   }
   ASSERT_EQ(removed.size(), 2u);
