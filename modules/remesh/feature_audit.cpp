@@ -88,11 +88,11 @@ std::pair<std::vector<PartSet>, std::vector<PartSet>> contact_and_corner_parts(c
 // feature where the same parts meet, else one where they meet with others (a part merged away
 // nearby now touches it too), each output feature used once.
 void match(const std::vector<PartSet>& in, const std::vector<PartSet>& out, const std::vector<double>& size,
-           std::vector<char>& lost) {
+           std::vector<char>& lost, std::vector<char>& used) {
   std::vector<int> order(in.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size[a] > size[b]; });
-  std::vector<char> used(out.size(), 0);
+  used.assign(out.size(), 0);
   lost.assign(in.size(), 1);
   for (bool exact : {true, false})
     for (int i : order) {
@@ -173,9 +173,31 @@ FeatureAudit audit_features(const StructuralModel& input, const StructuralModel&
     for (int c : input.corners[k].contacts) nearest = std::min(nearest, length[c]);
     spacing[k] = nearest;
   }
-  std::vector<char> contact_lost, corner_lost;
-  match(in_contacts, out_contacts, length, contact_lost);
-  match(in_corners, out_corners, spacing, corner_lost);
+  std::vector<char> contact_lost, corner_lost, contact_used, corner_used;
+  match(in_contacts, out_contacts, length, contact_lost, contact_used);
+  match(in_corners, out_corners, spacing, corner_lost, corner_used);
+  // Gained: the second and later output parts of one input part, unmatched output contacts and
+  // corners.
+  // Output vertices in the input's local frame.
+  const Vec3 shift = output.frame.origin - input.frame.origin;
+  auto at = [&](int v) { return Vec3(output.vertices[v] + shift); };
+  std::vector<char> part_seen(input.parts.size(), 0);
+  for (size_t o = 0; o < input_part.size() && o < output.parts.size(); ++o) {
+    const SurfacePart& part = output.parts[o];
+    if (part_seen[input_part[o]]++ == 0 || part.model_vertex.empty()) continue;
+    audit.gained.push_back({VertexFeature::Surface, static_cast<int>(o), 0.0,
+                            at(part.model_vertex[part.model_vertex.size() / 2])});
+  }
+  for (size_t c = 0; c < contact_used.size(); ++c)
+    if (!contact_used[c]) {
+      const std::vector<int>& line = output.contacts[c].vertices;
+      audit.gained.push_back(
+          {VertexFeature::Contact, static_cast<int>(c), 0.0, at(line[line.size() / 2])});
+    }
+  for (size_t k = 0; k < corner_used.size(); ++k)
+    if (!corner_used[k])
+      audit.gained.push_back(
+          {VertexFeature::Corner, static_cast<int>(k), 0.0, at(output.corners[k].vertex)});
   // A contact is also no larger than its distance to a contact it runs along (a thin wedge of a
   // wide part between them); only worked out for what is lost.
   std::vector<char> refine(input.contacts.size(), 0);

@@ -44,6 +44,9 @@ struct FeatureAudit {
   /// mean edge length h (a regular hexagon's); the paper's merges act within one cell.
   double resolution = 0.0;
   std::vector<LostFeature> lost;  // surface parts, then contacts, then corners
+  /// Output features with no input counterpart (id: index in the output model; size 0): an
+  /// input part remeshed as several, a contact or corner where the input has none.
+  std::vector<LostFeature> gained;
   std::vector<LostRegion> regions_lost;
   std::vector<LostRegionContact> region_contacts_lost;
   /// Lost features, regions and region contacts at least as large as the resolution.

@@ -65,8 +65,8 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
   CheckEntry entry;
   entry.name = "topology_kept";
   const FeatureAudit& audit = topology.features;
-  entry.count = static_cast<long>(audit.lost.size() + audit.regions_lost.size() +
-                                  audit.region_contacts_lost.size());
+  entry.count = static_cast<long>(audit.lost.size() + audit.gained.size() +
+                                  audit.regions_lost.size() + audit.region_contacts_lost.size());
   auto add = [&](const std::string& what, const Vec3& local) {
     if (entry.examples.size() < static_cast<size_t>(max_places))
       entry.examples.push_back({what, local + input.frame.origin, {}});
@@ -74,6 +74,11 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
   for (const LostFeature& f : audit.lost)
     add(std::string("input ") + feature_kind(f.kind) + " " + std::to_string(f.id) +
             " without a counterpart",
+        f.location);
+  // A gained feature is two surfaces touching where the input keeps them apart.
+  for (const LostFeature& f : audit.gained)
+    add(std::string("output ") + feature_kind(f.kind) + " " + std::to_string(f.id) +
+            " that the input does not have",
         f.location);
   // A region or a region contact is lost somewhere along its extent: all of its places.
   for (const LostRegion& r : audit.regions_lost)
@@ -89,6 +94,7 @@ CheckEntry topology_kept(const StructuralModel& input, const TopologyReport& top
   entry.message = entry.count == 0
                       ? "every input surface part, contact, corner and region kept"
                       : std::to_string(audit.lost.size()) + " surface parts, contacts or corners, " +
+                            std::to_string(audit.gained.size()) + " gained, " +
                             std::to_string(audit.regions_lost.size()) + " regions and " +
                             std::to_string(audit.region_contacts_lost.size()) +
                             " region contacts of the input without a counterpart";

@@ -1,4 +1,5 @@
 #include "modules/remesh/remesh_verdict.h"
+#include "modules/remesh/feature_audit.h"
 
 #include <gtest/gtest.h>
 
@@ -87,6 +88,29 @@ TEST(RemeshVerdict, TopologyKeptCountsLostFeaturesRegionsAndRegionContacts) {
   EXPECT_NEAR((kept.examples[2].location - (Vec3(1, 0, 0) + input.frame.origin)).norm(), 0, 1e-9);
   EXPECT_NE(kept.examples[3].what.find("no longer touch"), std::string::npos);
   EXPECT_EQ(topology_kept(input, topology, 2).examples.size(), 2u);
+}
+
+
+TEST(RemeshVerdict, GainedFeaturesAreCountedAndPlaced) {
+  // The input as its own remesh gains nothing; with output part 1 taken for a second piece of
+  // input part 0 (a part split in two), that piece is gained and the verdict counts it.
+  const StructuralModel input = two_layer_box();
+  std::vector<int> identity(input.parts.size());
+  for (size_t p = 0; p < identity.size(); ++p) identity[p] = static_cast<int>(p);
+  const FeatureAudit same = audit_features(input, input, identity, {}, {}, 1.0);
+  EXPECT_TRUE(same.lost.empty());
+  EXPECT_TRUE(same.gained.empty());
+  std::vector<int> split = identity;
+  split[1] = 0;
+  const FeatureAudit audit = audit_features(input, input, split, {}, {}, 1.0);
+  ASSERT_FALSE(audit.gained.empty());
+  EXPECT_EQ(audit.gained[0].kind, VertexFeature::Surface);
+  EXPECT_EQ(audit.gained[0].id, 1);
+  TopologyReport topology;
+  topology.features.gained = audit.gained;
+  const CheckEntry kept = topology_kept(input, topology, 10);
+  EXPECT_EQ(kept.count, static_cast<long>(audit.gained.size()));
+  EXPECT_EQ(kept.examples[0].what, "output surface 1 that the input does not have");
 }
 
 }  // namespace
