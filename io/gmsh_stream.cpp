@@ -10,23 +10,6 @@ namespace voroseal {
 
 namespace {
 
-// The longest text line of a .msh file, as LineReader's bound: a binary or corrupt file read
-// as text is refused after reading that much, not after reading all of it.
-constexpr size_t kMaxLineBytes = size_t{1} << 20;
-
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-// Short, printable quoting of a token for messages, even for binary garbage.
-std::string quoted(std::string_view token) {
-  std::string out;
-  for (char c : token.substr(0, 40))
-    out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
-  if (token.size() > 40) out += "...";
-  return "'" + out + "'";
-}
-
 // Little-endian bytes to an unsigned integer, whatever the host's byte order.
 uint64_t little_endian(const unsigned char* b, size_t bytes) {
   uint64_t v = 0;
@@ -69,11 +52,11 @@ bool MshStream::skip_to_line(std::string_view token) {
        at = text_all_.find(token, at + 1)) {
     // A match counts when only blanks precede it on its line and a blank or the end follows.
     size_t start = at;
-    while (start > pos_ && is_space(text_all_[start - 1])) --start;
+    while (start > pos_ && is_blank(text_all_[start - 1])) --start;
     const bool line_begins = start == pos_ || text_all_[start - 1] == '\n';
     const size_t after = at + token.size();
     const bool token_ends =
-        after == text_all_.size() || is_space(text_all_[after]) || text_all_[after] == '\n';
+        after == text_all_.size() || is_blank(text_all_[after]) || text_all_[after] == '\n';
     if (line_begins && token_ends) {
       pos_ = start;
       return next();
@@ -82,24 +65,13 @@ bool MshStream::skip_to_line(std::string_view token) {
   return false;
 }
 
-void MshStream::tokenize() {
-  tokens_.clear();
-  size_t i = 0;
-  const size_t n = text_.size();
-  while (i < n) {
-    while (i < n && is_space(text_[i])) ++i;
-    if (i >= n) break;
-    const size_t start = i;
-    while (i < n && !is_space(text_[i])) ++i;
-    tokens_.push_back(text_.substr(start, i - start));
-  }
-}
+void MshStream::tokenize() { split_tokens(text_, tokens_); }
 
 long long MshStream::integer(size_t i, const char* what) const {
   if (i >= tokens_.size()) fail(std::string("missing ") + what);
   long long v = 0;
   if (!parse_integer(tokens_[i], v))
-    fail(std::string("expected an integer ") + what + ", found " + quoted(tokens_[i]));
+    fail(std::string("expected an integer ") + what + ", found " + quoted_token(tokens_[i]));
   return v;
 }
 
@@ -107,7 +79,7 @@ double MshStream::real(size_t i, const char* what) const {
   if (i >= tokens_.size()) fail(std::string("missing ") + what);
   double v = 0;
   if (!parse_finite_real(tokens_[i], v))
-    fail(std::string("expected a finite number ") + what + ", found " + quoted(tokens_[i]));
+    fail(std::string("expected a finite number ") + what + ", found " + quoted_token(tokens_[i]));
   return v;
 }
 

@@ -15,23 +15,30 @@
 
 namespace voroseal {
 
-namespace {
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
 
-// The longest line a text model file may have (a GOCAD name, a Gmsh entity line are far
-// shorter).
-constexpr size_t kMaxLineBytes = size_t{1} << 20;
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
+  tokens.clear();
+  size_t i = 0;
+  const size_t n = line.size();
+  while (i < n) {
+    while (i < n && is_blank(line[i])) ++i;
+    if (i >= n) break;
+    const size_t start = i;
+    while (i < n && !is_blank(line[i])) ++i;
+    tokens.push_back(line.substr(start, i - start));
+  }
+}
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-std::string quoted(std::string_view token) {
-  // Keep messages short and printable even for binary garbage.
+std::string quoted_token(std::string_view token) {
   std::string out;
-  for (char c : token.substr(0, 40)) out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
+  for (char c : token.substr(0, 40))
+    out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
   if (token.size() > 40) out += "...";
   return "'" + out + "'";
 }
-
-}  // namespace
 
 TextSource::TextSource(std::string name, std::string text) : name_(std::move(name)) {
   auto owned = std::make_shared<const std::string>(std::move(text));
@@ -121,16 +128,7 @@ bool LineReader::next_nonblank() {
 }
 
 void LineReader::tokenize() {
-  tokens_.clear();
-  size_t i = 0;
-  const size_t n = text_.size();
-  while (i < n) {
-    while (i < n && is_space(text_[i])) ++i;
-    if (i >= n) break;
-    const size_t start = i;
-    while (i < n && !is_space(text_[i])) ++i;
-    tokens_.push_back(text_.substr(start, i - start));
-  }
+  split_tokens(text_, tokens_);
 }
 
 std::string LineReader::rest(size_t i) const {
@@ -145,14 +143,15 @@ std::string LineReader::rest(size_t i) const {
 std::string LineReader::rest_text(size_t i) const {
   if (i >= tokens_.size()) return "";
   std::string_view r = text_.substr(static_cast<size_t>(tokens_[i].data() - text_.data()));
-  while (!r.empty() && is_space(r.back())) r.remove_suffix(1);
+  while (!r.empty() && is_blank(r.back())) r.remove_suffix(1);
   return std::string(r);
 }
 
 long long LineReader::integer(size_t i, const char* what) const {
   if (i >= tokens_.size()) fail(std::string("missing ") + what);
   long long v = 0;
-  if (!parse_integer(tokens_[i], v)) fail(std::string("expected an integer ") + what + ", found " + quoted(tokens_[i]));
+  if (!parse_integer(tokens_[i], v))
+    fail(std::string("expected an integer ") + what + ", found " + quoted_token(tokens_[i]));
   return v;
 }
 
@@ -160,14 +159,14 @@ double LineReader::real(size_t i, const char* what) const {
   if (i >= tokens_.size()) fail(std::string("missing ") + what);
   double v = 0;
   if (!parse_finite_real(tokens_[i], v))
-    fail(std::string("expected a finite number ") + what + ", found " + quoted(tokens_[i]));
+    fail(std::string("expected a finite number ") + what + ", found " + quoted_token(tokens_[i]));
   return v;
 }
 
 void LineReader::require(size_t n, const char* what) const {
   if (tokens_.size() < n)
-    fail(std::string("expected ") + std::to_string(n) + " values on the line for " + what + ", found " +
-         std::to_string(tokens_.size()));
+    fail(std::string("expected ") + std::to_string(n) + " values on the line for " + what +
+         ", found " + std::to_string(tokens_.size()));
 }
 
 void LineReader::fail(const std::string& message) const {
@@ -202,7 +201,8 @@ long long TokenReader::integer(const char* what) {
   const std::string_view t = next();
   if (t.empty()) fail(std::string("file ends where ") + what + " was expected");
   long long v = 0;
-  if (!parse_integer(t, v)) fail(std::string("expected an integer ") + what + ", found " + quoted(t));
+  if (!parse_integer(t, v))
+    fail(std::string("expected an integer ") + what + ", found " + quoted_token(t));
   return v;
 }
 
@@ -210,7 +210,8 @@ double TokenReader::real(const char* what) {
   const std::string_view t = next();
   if (t.empty()) fail(std::string("file ends where ") + what + " was expected");
   double v = 0;
-  if (!parse_finite_real(t, v)) fail(std::string("expected a finite number ") + what + ", found " + quoted(t));
+  if (!parse_finite_real(t, v))
+    fail(std::string("expected a finite number ") + what + ", found " + quoted_token(t));
   return v;
 }
 

@@ -37,6 +37,17 @@ class TextSource {
 /// it cannot be opened or read.
 TextSource load_text(const std::string& path);
 
+/// The longest line a text model file may have (a GOCAD name, a Gmsh entity line are far
+/// shorter): a binary or corrupt file read as text is refused after that much.
+constexpr size_t kMaxLineBytes = size_t{1} << 20;
+
+/// Blanks between tokens: space, tab, '\r', '\v', '\f'.
+bool is_blank(char c);
+/// `line` split at blanks into `tokens` (cleared first).
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens);
+/// A token quoted for a message: short and printable even for binary garbage.
+std::string quoted_token(std::string_view token);
+
 /// Strict number parsing: the whole token must be the number ('+' sign allowed).
 bool parse_integer(std::string_view token, long long& value);
 /// Also rejects "nan", "inf" and values that overflow a double.
