@@ -58,11 +58,13 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     return true;
   };
   // Removes `parts` (their triangles die) and records the removal.
-  auto remove_parts = [&](const std::vector<int>& parts, const std::string& joined, double volume, double thickness) {
+  auto remove_parts = [&](const std::vector<int>& parts, const std::string& joined, double volume,
+                          double thickness, double rim_gap) {
     PocketRemoval removal;
     removal.region = joined;
     removal.volume = volume;
     removal.thickness = thickness;
+    removal.neck = rim_gap;
     BoundingBox box;
     for (int x : parts) {
       removal.parts.push_back(output.parts[x].name);
@@ -89,6 +91,29 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     return true;
   };
 
+  // The widest gap, in the input, between the surfaces whose pieces meet along the pocket's rim
+  // (the edges where two of its sides meet): where the pocket was cut off from its region.
+  auto neck = [&](const std::vector<Side>& sides) {
+    std::unordered_map<std::uint64_t, int> side_of_edge;  // the first side's part on each edge
+    double widest = 0.0;
+    for (const Side& s : sides)
+      for (int t : output.parts[s.part].source_triangle) {
+        const Triangle& f = surface.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+          const int a = f[i], b = f[(i + 1) % 3];
+          const auto [it, fresh] = side_of_edge.emplace(edge_key(a, b), s.part);
+          if (fresh) continue;
+          const int p = input_part_of_output[it->second], q = input_part_of_output[s.part];
+          if (p == q) continue;
+          for (int v : {a, b}) {
+            const Vec3& x = surface.vertices[v];
+            widest = std::max(widest, (projector.on_part(p, x) - projector.on_part(q, x)).norm());
+          }
+        }
+      }
+    return widest;
+  };
+
   for (size_t r = 0; r < output.regions.size(); ++r) {
     if (input_of_output[r] >= 0) continue;
     const std::vector<Side>& sides = output.regions[r].sides;
@@ -101,7 +126,11 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     if (touched || area <= 0.0) continue;  // a neighbouring pocket changed it: next round
     const double volume = std::abs(output.signed_volume(sides));
     const double thickness = 2.0 * volume / area;
-    if (thickness > resolution) continue;
+    // A pocket whose rim lies where the input's surfaces are closer than d_min was cut off by
+    // merges below d_min, on purpose: it opens whatever its thickness.
+    const double rim_gap = neck(sides);
+    const bool necked = rim_gap < min_feature;
+    if (thickness > resolution && !necked) continue;
     // A bubble inside one region (every side has it beyond): all its sides go.
     std::vector<int> all;
     int beyond_all = -2;
@@ -113,7 +142,8 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     if (beyond_all >= 0 && input_of_output[beyond_all] >= 0 && leaves_no_border(all)) {
-      remove_parts(all, input.regions[input_of_output[beyond_all]].name, volume, thickness);
+      remove_parts(all, input.regions[input_of_output[beyond_all]].name, volume, thickness,
+                   rim_gap);
       continue;
     }
     // A side between two pockets goes: they are one pocket, which the next round opens.
@@ -121,7 +151,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     for (const Side& x : sides) {
       const int q = beyond(x);
       if (q < 0 || q == static_cast<int>(r) || input_of_output[q] >= 0 || !leaves_no_border({x.part})) continue;
-      remove_parts({x.part}, std::string(), volume, thickness);
+      remove_parts({x.part}, std::string(), volume, thickness, rim_gap);
       merged = true;
       break;
     }
@@ -156,7 +186,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
         relabel.push_back({y.part, other});
       }
       if (!consistent || !leaves_no_border({x.part})) continue;
-      remove_parts({x.part}, input.regions[q_input].name, volume, thickness);
+      remove_parts({x.part}, input.regions[q_input].name, volume, thickness, rim_gap);
       for (const auto& [y, p] : relabel) {
         for (int t : output.parts[y].source_triangle) {
           surface.triangle_part[t] = p;
@@ -168,8 +198,9 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
       }
       break;
     }
-    if (removed.size() > removals_before || !(thickness < min_feature)) continue;
-    // Thinner than d_min: the largest side between it and an input region goes.
+    if (removed.size() > removals_before || !(thickness < min_feature || necked)) continue;
+    // Thinner than d_min, or cut off where the input is: the largest side between it and an
+    // input region goes.
     int best = -1;
     for (size_t k = 0; k < sides.size(); ++k) {
       const int q = beyond(sides[k]);
@@ -179,7 +210,7 @@ std::vector<PocketRemoval> remove_pockets(RemeshedSurface& surface, const Struct
     }
     if (best >= 0)
       remove_parts({sides[best].part}, input.regions[input_of_output[beyond(sides[best])]].name,
-                   volume, thickness);
+                   volume, thickness, rim_gap);
   }
   if (!removed.empty()) surface.remove_triangles(dead);
   return removed;

@@ -22,6 +22,7 @@ struct PocketRemoval {
   std::vector<std::string> parts;  // the output surface parts removed
   double volume = 0.0;     // of the pocket
   double thickness = 0.0;  // 2V/A
+  double neck = 0.0;       // widest input gap along its rim, where its sides meet
   int triangles = 0;       // removed
   std::vector<std::string> relabeled;  // "output part -> input part" for the sides relabelled
   Vec3 location = Vec3::Zero();  // middle of the removed parts, local frame of `surface`
@@ -41,7 +42,9 @@ struct PocketRemoval {
 /// A pocket thinner than `min_feature` (d_min) that none of these opens is a layer pinched
 /// off on purpose: a side between it and an input region goes even though the other sides keep
 /// their labels (a lens of a thin layer cut off by its two horizons touching joins the region
-/// beyond one of them).
+/// beyond one of them). So does a pocket of any thickness whose rim (where its sides meet) lies
+/// where the input surfaces of those sides are closer than d_min: the merges below d_min cut it
+/// off (a layer thinning to a sliver between a lens and the rest of it).
 /// Nothing is removed that would leave an edge with a single triangle. Pockets with no such side
 /// are left (and reported as gained regions). `input_part_of_output` gives the input part of
 /// each output part.

@@ -26,6 +26,24 @@ FeatureCounts counts_of(const StructuralModel& m) {
           static_cast<int>(m.regions.size())};
 }
 
+/// Points where two sides of a region meet (its contacts joining two of its parts), about
+/// kRimPoints of them spread over those contacts; the model's local frame.
+std::vector<Vec3> pocket_rim(const StructuralModel& model, const std::vector<Side>& sides) {
+  constexpr size_t kRimPoints = 8;
+  std::set<int> parts;
+  for (const Side& s : sides) parts.insert(s.part);
+  std::vector<int> rim;
+  for (const Contact& c : model.contacts) {
+    int own = 0;
+    for (int p : c.parts) own += static_cast<int>(parts.count(p));
+    if (own >= 2) rim.insert(rim.end(), c.vertices.begin(), c.vertices.end());
+  }
+  std::vector<Vec3> points;
+  const size_t stride = std::max<size_t>(1, rim.size() / kRimPoints);
+  for (size_t i = stride / 2; i < rim.size(); i += stride) points.push_back(model.vertices[rim[i]]);
+  return points;
+}
+
 }  // namespace
 
 StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
@@ -98,8 +116,10 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
       for (const Side& side : region.sides)
         for (int v : out.parts[side.part].model_vertex) box.extend(out.vertices[v]);
       const Vec3 middle = box.empty() ? Vec3(Vec3::Zero()) : box.center();
-      gained.push_back({index, match[r], std::abs(out.signed_volume(region.sides)),
-                        middle + out.frame.origin - input.frame.origin});
+      const Vec3 shift = out.frame.origin - input.frame.origin;
+      gained.push_back({index, match[r], std::abs(out.signed_volume(region.sides)), middle + shift,
+                        pocket_rim(out, region.sides)});
+      for (Vec3& x : gained.back().rim) x += shift;
     }
     new_index[r] = index;
     regions.push_back(std::move(region));

@@ -61,6 +61,9 @@ struct GainedRegion {
   int like_input = -1;           // the input region its sides face (-1: none)
   double volume = 0.0;
   Vec3 location = Vec3::Zero();  // middle of its bounding box, the input's local frame
+  /// A few points of its rim (contacts where two of its sides meet), the input's local frame:
+  /// where it was cut off, and where refinement can open it.
+  std::vector<Vec3> rim;
 };
 
 struct TopologyReport {

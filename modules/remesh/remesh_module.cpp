@@ -119,13 +119,16 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
   return j;
 }
 
-/// Where an invalid remesh is refined: the failed checks' places (pockets included), in the
-/// model's local frame.
-std::vector<Vec3> places_to_refine(const Judgement& j, const Frame& frame) {
+/// Where an invalid remesh is refined: the failed checks' places, and the rims of the pockets
+/// (where they were cut off from their region), in the model's local frame.
+std::vector<Vec3> places_to_refine(const Judgement& j, const TopologyReport& topology,
+                                   const Frame& frame) {
   std::vector<Vec3> places;
   for (const CheckEntry& c : j.verdict.checks)
     if (c.severity == Severity::Error && !c.passed())
       for (const CheckExample& e : c.examples) places.push_back(e.location - frame.origin);
+  for (const GainedRegion& g : topology.regions_gained)
+    places.insert(places.end(), g.rim.begin(), g.rim.end());
   return places;
 }
 
@@ -360,7 +363,7 @@ class RemeshModule final : public Module {
     const size_t seeds_before_repair = result.seeds.seeds.size();
     {
       SeedOptimizationResult last = result.seeds;
-      std::vector<Vec3> places = places_to_refine(judgement, input.frame);
+      std::vector<Vec3> places = places_to_refine(judgement, result.topology, input.frame);
       BallRefinementOptions repair = remesh_options.refinement;
       repair.min_size = result.min_feature;
       // --no-cleanup asks for the raw dual: judged, not refined.
@@ -388,7 +391,7 @@ class RemeshModule final : public Module {
         context.log.info("remesh: refined " + std::to_string(places.size()) +
                          " places where the remesh was invalid (" + std::to_string(added) +
                          " seeds added): " + std::to_string(defects) + " defects left");
-        places = places_to_refine(j, input.frame);
+        places = places_to_refine(j, next.topology, input.frame);
         if (defects < judgement.defects()) {
           result = std::move(next);
           judgement = std::move(j);
@@ -625,6 +628,7 @@ class RemeshModule final : public Module {
                          {"triangles", r.triangles},
                          {"volume", r.volume},
                          {"thickness", r.thickness},
+                         {"neck", r.neck},
                          {"location", {x.x(), x.y(), x.z()}}});
     }
     nlohmann::json contacts_lost = nlohmann::json::array();
@@ -712,8 +716,9 @@ class RemeshModule final : public Module {
     }
     if (!t.pockets_removed.empty())
       log.info("remesh: " + std::to_string(t.pockets_removed.size()) +
-               " pockets thinner than a cell, closed between surfaces that lie closer than the resolution, opened "
-               "again by removing sides (JSON: topology.pockets_removed)");
+               " pockets closed between surfaces that lie closer than the resolution (thinner than "
+               "a cell, or cut off where the input is thinner than d_min), opened again by "
+               "removing sides (JSON: topology.pockets_removed)");
     auto name = [&](int r) { return "'" + input.regions[static_cast<size_t>(r)].name + "'"; };
     for (const LostRegionContact& c : t.features.region_contacts_lost)
       log.warning("remesh: regions " + name(c.a) + " and " + name(c.b) +

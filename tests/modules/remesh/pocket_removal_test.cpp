@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 #include "framework/model/model_builder.h"
 #include "modules/remesh/remesh.h"
 #include "tests/support/test_models.h"
@@ -14,6 +17,7 @@ struct BoxRemesh {
   StructuralModel input = build_model(test::lattice_box(4, true));
   RemeshedSurface surface;
   int horizon = -1;
+  std::vector<GainedRegion> gained_before;  // the pockets `remove` found
 
   BoxRemesh() {
     surface.vertices = input.vertices;
@@ -46,13 +50,15 @@ struct BoxRemesh {
   }
   // Remeshes the surface into a model, removes its pockets thinner than `resolution`, and
   // remeshes again; returns the removals.
-  std::vector<PocketRemoval> remove(double resolution, StructuralModel& after, TopologyReport& report) {
+  std::vector<PocketRemoval> remove(double resolution, StructuralModel& after,
+                                    TopologyReport& report, double min_feature = 0.0) {
     TopologyReport first;
     const StructuralModel before = model_from_remeshed(surface, input, &first, 1.0);
+    gained_before = first.regions_gained;
     const SurfaceProjector projector(input);
     const std::vector<PocketRemoval> removed =
         remove_pockets(surface, input, before, first.input_part_of_output,
-                       first.output_region_of_input, projector, resolution, 0.0);
+                       first.output_region_of_input, projector, resolution, min_feature);
     after = model_from_remeshed(surface, input, &report, 1.0);
     return removed;
   }
@@ -140,6 +146,114 @@ TEST(RemovePockets, ABubbleOfTwoSurfacesGoesAway) {
   EXPECT_EQ(box.surface.triangles.size(), triangles);
   EXPECT_EQ(after.regions.size(), 2u);
   EXPECT_TRUE(report.regions_preserved);
+}
+
+TEST(RemovePockets, APocketThickerThanACellGoesOnlyWhereItsRimIsThinnerThanDMin) {
+  // The two-surface bubble of above, judged with cells far thinner than it: it is no artefact of
+  // the resolution, but where its horizon and top faces meet the input's horizon and top are 0.5
+  // apart, so with d_min over 0.5 the merges below d_min made it and it goes.
+  for (const double d_min : {0.3, 0.7}) {
+    BoxRemesh box;
+    const int top = box.part_named("zmax");
+    ASSERT_GE(top, 0);
+    const size_t triangles = box.surface.triangles.size();
+    box.add_floating_tetrahedron();
+    box.surface.triangle_part[triangles + 2] = top;
+    box.surface.triangle_part[triangles + 3] = top;
+    StructuralModel after;
+    TopologyReport report;
+    const std::vector<PocketRemoval> removed = box.remove(1e-3, after, report, d_min);
+    ASSERT_EQ(box.gained_before.size(), 1u);
+    // Its rim is refined when it stays: points of the four edges where the two surfaces meet.
+    const std::vector<Vec3>& rim = box.gained_before[0].rim;
+    EXPECT_FALSE(rim.empty());
+    for (const Vec3& x : rim) {
+      const Vec3 at = x + box.input.frame.origin;
+      EXPECT_GE(at.z(), 0.7 - 1e-9);
+      EXPECT_LE(at.z(), 0.8 + 1e-9);
+      EXPECT_NEAR(at.x(), 0.5, 0.05 + 1e-9);
+    }
+    if (d_min < 0.5) {
+      EXPECT_TRUE(removed.empty());
+      EXPECT_EQ(report.regions_gained.size(), 1u);
+    } else {
+      ASSERT_EQ(removed.size(), 1u);
+      EXPECT_NEAR(removed[0].neck, 0.5, 1e-9);
+      EXPECT_EQ(removed[0].triangles, 4);
+      EXPECT_TRUE(report.regions_gained.empty());
+      EXPECT_EQ(after.regions.size(), 2u);
+    }
+  }
+}
+
+// The layer of thin_layer_box (n = 6, 0.02 thick) pinched around the middle of its horizons:
+// the upper horizon takes the lower one's vertices along a loop, so a lens of the layer is cut
+// off, both its sides labelled with the layer. Returns the pocket removals for d_min.
+std::vector<PocketRemoval> remove_lens(double d_min, StructuralModel& after,
+                                       TopologyReport& report) {
+  constexpr int n = 6;
+  const StructuralModel input = build_model(test::thin_layer_box(n, 0.02));
+  RemeshedSurface surface;
+  surface.vertices = input.vertices;
+  const ModelTriangles flat = flatten(input);
+  surface.triangles = flat.triangles;
+  surface.triangle_part = flat.part;
+  surface.features.assign(surface.vertices.size(), VertexFeature{});
+  // The horizon vertex nearest lattice point (i, j) at height z.
+  auto vertex_at = [&](int i, int j, double z) {
+    const Vec3 want =
+        Vec3(static_cast<double>(i) / n, static_cast<double>(j) / n, z) - input.frame.origin;
+    int best = -1;
+    double best_d = 1e30;
+    for (size_t v = 0; v < input.vertices.size(); ++v) {
+      const Vec3 d = input.vertices[v] - want;
+      if (std::abs(d.z()) > 1e-9) continue;
+      if (d.squaredNorm() < best_d) {
+        best_d = d.squaredNorm();
+        best = static_cast<int>(v);
+      }
+    }
+    return best;
+  };
+  // The border of the 2 x 2 middle cells, lattice edges of both horizons; the lower horizon's
+  // middle goes down 0.02, so that the upper one's triangles with three vertices on the loop lie
+  // above it.
+  std::vector<int> pinched(input.vertices.size(), -1);
+  for (int i = 2; i <= 4; ++i)
+    for (int j = 2; j <= 4; ++j)
+      if (i != 3 || j != 3) pinched[vertex_at(i, j, 0.51)] = vertex_at(i, j, 0.49);
+  surface.vertices[vertex_at(3, 3, 0.49)].z() -= 0.02;
+  for (Triangle& f : surface.triangles)
+    for (int& v : f)
+      if (pinched[v] >= 0) v = pinched[v];
+  TopologyReport first;
+  const StructuralModel before = model_from_remeshed(surface, input, &first, 1.0);
+  EXPECT_EQ(first.regions_gained.size(), 1u);
+  const SurfaceProjector projector(input);
+  const std::vector<PocketRemoval> removed =
+      remove_pockets(surface, input, before, first.input_part_of_output,
+                     first.output_region_of_input, projector, 1.0, d_min);
+  after = model_from_remeshed(surface, input, &report, 1.0);
+  return removed;
+}
+
+TEST(RemovePockets, ALensOfAThinLayerGoesOnlyWhenThinnerThanDMin) {
+  // The lens is thinner than a cell but no labelled rule opens it; it is about 0.01 thick (2V/A)
+  // and its rim 0.02: it goes when thinner than d_min, not otherwise.
+  StructuralModel after;
+  TopologyReport report;
+  EXPECT_TRUE(remove_lens(0.005, after, report).empty());
+  EXPECT_EQ(report.regions_gained.size(), 1u);
+  EXPECT_EQ(after.regions.size(), 4u);
+
+  const std::vector<PocketRemoval> removed = remove_lens(0.015, after, report);
+  ASSERT_EQ(removed.size(), 1u);
+  EXPECT_LT(removed[0].thickness, 0.015);
+  EXPECT_GT(removed[0].neck, 0.015);  // not cut off below d_min: the thin rule opened it
+  EXPECT_FALSE(removed[0].region.empty());
+  EXPECT_EQ(removed[0].parts.size(), 1u);
+  EXPECT_TRUE(report.regions_gained.empty());
+  EXPECT_EQ(after.regions.size(), 3u);
 }
 
 TEST(RemovePockets, TwoPocketsSideBySideBecomeOneThenGo) {
