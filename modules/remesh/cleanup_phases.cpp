@@ -36,7 +36,8 @@ PhaseCounts merges(Editor& e, const CleanupContext& c) {
 
 PhaseCounts smoothing(Editor& e, const CleanupContext& c) {
   PhaseCounts r;
-  r.progress = r.counts.smoothing_moves = smooth(e, c.projector);
+  r.progress = r.counts.smoothing_moves =
+      smooth(e, c.projector, nullptr, c.options.target_size.get());
   r.counts.flips = flip_edges(e, c.thresholds.flip_flatness_deg);
   r.counts.smoothing_passes = 1;
   return r;
@@ -44,7 +45,8 @@ PhaseCounts smoothing(Editor& e, const CleanupContext& c) {
 
 PhaseCounts relaxation(Editor& e, const CleanupContext& c) {
   PhaseCounts r;
-  r.progress = r.counts.smoothing_moves = smooth(e, c.projector);
+  r.progress = r.counts.smoothing_moves =
+      smooth(e, c.projector, nullptr, c.options.target_size.get());
   return r;
 }
 
@@ -96,7 +98,7 @@ PhaseCounts fidelity(Editor& e, const CleanupContext& c) {
       splits + refine_toward_input(e, tolerance, budget - splits);
   if (r.progress == 0) return r;
   r.counts.flips = flip_edges(e, c.thresholds.flip_flatness_deg);
-  smooth(e, c.projector);
+  smooth(e, c.projector, nullptr, c.options.target_size.get());
   r.counts.flips += flip_edges(e, c.thresholds.flip_flatness_deg);
   return r;
 }

@@ -11,7 +11,7 @@
 
 namespace voroseal::cleanup {
 
-bool smoothing_target(Editor& e, int v, Vec3& target) {
+bool smoothing_target(Editor& e, int v, Vec3& target, const std::vector<double>* vertex_size) {
   const VertexFeature f = e.mesh().features[v];
   if (f.kind == VertexFeature::Corner || f.pinned) return false;
   const std::vector<int>& ring = e.star(v);
@@ -23,7 +23,11 @@ bool smoothing_target(Editor& e, int v, Vec3& target) {
       if (e.mesh().triangle_part[t] != f.id) return false;
       const Triangle& tri = e.mesh().triangles[t];
       const Vec3 n = e.normal(t);
-      const double a = 0.5 * n.norm();
+      double a = 0.5 * n.norm();
+      if (vertex_size != nullptr) {
+        const std::vector<double>& s = *vertex_size;
+        a /= std::pow((s[tri[0]] + s[tri[1]] + s[tri[2]]) / 3.0, 4);
+      }
       centroid += a * (e.p(tri[0]) + e.p(tri[1]) + e.p(tri[2])) / 3.0;
       normal += n;
       area += a;
@@ -104,15 +108,23 @@ std::vector<int> culprits(Editor& e, const Editor::Census& now, std::vector<Vec3
 
 }  // namespace
 
-int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only) {
+int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only,
+           const SizeField* target_size) {
   std::vector<Vec3> start = e.mesh().vertices;
+  // The sizes at the vertices where the pass starts (they move by a fraction of a cell).
+  std::vector<double> size;
+  if (target_size != nullptr) {
+    size.resize(start.size());
+    for (size_t v = 0; v < start.size(); ++v)
+      size[v] = target_size->sizes()[target_size->nearest(start[v])];
+  }
   std::vector<char> moved(e.mesh().vertices.size(), 0);
   Vec3 target, x;
   bool any = false;
   for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
     const int v = static_cast<int>(vi);
     if (only != nullptr && !(*only)[v]) continue;
-    if (!smoothing_target(e, v, target)) continue;
+    if (!smoothing_target(e, v, target, size.empty() ? nullptr : &size)) continue;
     for (double step : {1.0, 0.5, 0.25})
       if (unfolded_move(e, projector, v, target, step, x)) {
         e.move(v, x, false);

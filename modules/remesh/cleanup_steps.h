@@ -154,15 +154,19 @@ int join_close_tips(Editor& e, double min_feature, double max_wedge_deg, Cleanup
 
 // Where smoothing would move vertex v: surface vertices toward the area-weighted centroid of
 // their ring within the tangent plane, contact vertices toward the middle of their two contact
-// neighbours. False when v stays.
-bool smoothing_target(Editor& e, int v, Vec3& target);
+// neighbours. With `vertex_size` (a target size per vertex) each triangle weighs area / s^4, the
+// density the seeds were placed for, so that the cells keep their grading. False when v stays.
+bool smoothing_target(Editor& e, int v, Vec3& target,
+                      const std::vector<double>* vertex_size = nullptr);
 
 // One Gauss-Seidel pass of tangential smoothing (see smoothing_target()). Moves that fold no
 // triangle of their ring are made, then the moved triangles are checked at once, which is much
 // cheaper than checking every move: the vertices of triangles in a violation the pass made are
 // put back where they were, until the pass made none.
 // Returns the vertices moved.
-int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr);
+// `target_size` (null: uniform) gives the size the cells should have around a point.
+int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>* only = nullptr,
+           const SizeField* target_size = nullptr);
 
 // Smallest angle of the triangles around v with v at x.
 double ring_min_angle(Editor& e, int v, const Vec3& x);

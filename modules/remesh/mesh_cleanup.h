@@ -10,12 +10,15 @@
 // the edits of the phases kept, each phase and what is left.
 #pragma once
 
+#include <memory>
+
 #include "framework/host/progress.h"
 #include "framework/model/structural_model.h"
 #include "modules/remesh/cleanup_report.h"
 #include "modules/remesh/cleanup_thresholds.h"
 #include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/remeshed_surface.h"
+#include "modules/remesh/size_field.h"
 #include "modules/remesh/surface_projection.h"
 
 namespace voroseal {
@@ -45,6 +48,9 @@ struct CleanupOptions {
   double zip_wedge_deg = 0.0;
   /// The angles, round limits and factors of the phases (cleanup_thresholds.h).
   CleanupThresholds thresholds;
+  /// The size the cells should have around a point, relative (a graded remesh: sizes, thin
+  /// layers, repair rounds); smoothing keeps that grading. Null: uniform.
+  std::shared_ptr<const SizeField> target_size;
 };
 
 /// Cleans `surface` in place. Corners never move; contact vertices move along their contact;

@@ -44,6 +44,10 @@ std::vector<Vec3> pocket_rim(const StructuralModel& model, const std::vector<Sid
   return points;
 }
 
+// Where the density is zero the cells are as large as the model allows: a size cap keeps the
+// smoothing's weights finite.
+constexpr double kMaxRelativeSize = 1e3;
+
 }  // namespace
 
 StructuralModel model_from_remeshed(const RemeshedSurface& surface, const StructuralModel& input,
@@ -246,6 +250,14 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   t0 = std::chrono::steady_clock::now();
   if (options.clean_up) {
     ProgressStep step(progress, "remesh: clean-up");
+    // A graded remesh keeps its grading through the smoothing: sizes ρ^(-1/4) of the density.
+    if (const std::vector<double>& rho = seed_density(); !rho.empty()) {
+      std::vector<double> size(rho.size());
+      for (size_t v = 0; v < rho.size(); ++v)
+        size[v] =
+            rho[v] > 0.0 ? std::min(kMaxRelativeSize, std::pow(rho[v], -0.25)) : kMaxRelativeSize;
+      cleanup.target_size = std::make_shared<const SizeField>(input.vertices, std::move(size));
+    }
     // The zip (experimental) works inside surfaces the clean-up has not finished repairing, and
     // the last repair can then fail where it succeeds without it (modelA6 with --thin-layers: the
     // zip closed a coincident pair of triangles next to a leak the mesh building had left, and

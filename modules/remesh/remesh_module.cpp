@@ -9,7 +9,9 @@
 #include <fstream>
 #include <memory>
 #include <system_error>
+#include <unordered_set>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 #include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
@@ -17,6 +19,7 @@
 #include "framework/host/registry.h"
 #include "io/atomic_file.h"
 #include "io/model_io.h"
+#include "io/size_field_format.h"
 #include "modules/check/model_validity.h"
 #include "modules/remesh/cleanup_report_json.h"
 #include "modules/remesh/remesh.h"
@@ -248,8 +251,13 @@ class RemeshModule final : public Module {
                               "kind:fault, kind:horizon, kind:boundary; the smallest size wins");
     size.repeatable = true;
     p.push_back(size);
+    p.push_back(spec("size-field", ParameterType::Path, nullptr,
+                     "target edge lengths at points, a file of 'x y z h' lines (file "
+                     "coordinates): h at the points, graded away from them; the smallest size "
+                     "wins"));
     p.push_back(spec("gradation", ParameterType::Double, SeedOptions{}.gradation,
-                     "with --size: sizes change by at most this factor between neighbouring cells",
+                     "with --size or --size-field: sizes change by at most this factor between "
+                     "neighbouring cells",
                      1.01, 10.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
@@ -305,12 +313,31 @@ class RemeshModule final : public Module {
       throw ParameterError("remesh: give --edge-length or --seeds");
     }
     options.gradation = parameters.get_double("gradation");
-    if (parameters.has("size")) {
-      // The sizes change the seed count: the estimate counts the seeds they need.
-      options.sizes = parse_size_rules(parameters.get_string("size"));
+    if (parameters.has("size")) options.sizes = parse_size_rules(parameters.get_string("size"));
+    if (parameters.has("size-field")) {
+      const SizeSamples samples = read_size_field(parameters.get_string("size-field"));
+      std::vector<Vec3> local;
+      local.reserve(samples.points.size());
+      for (const Vec3& x : samples.points) local.push_back(x - context.model->frame.origin);
+      options.size_field = std::make_shared<const SizeField>(std::move(local), samples.sizes);
+    }
+    if (options.sized()) {
+      // Sizes finer than the input's triangles need finer triangles to be followed.
       const double h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));
-      seed_count *= surface_sizing(*context.model, options.sizes, h, options.gradation).seed_factor;
-      asked += " with --size (" + std::to_string(std::lround(seed_count)) + " seeds)";
+      auto refined = std::make_shared<StructuralModel>(*context.model);
+      if (const int split = refine_for_sizes(*refined, options.sizes, h, options.gradation,
+                                             options.size_field.get());
+          split > 0) {
+        context.log.info(
+            "remesh: sizes finer than the input's triangles: " + std::to_string(split) +
+            " input edges bisected (" + std::to_string(refined->num_triangles()) + " triangles)");
+        context.model = std::move(refined);
+      }
+      // The sizes change the seed count: the estimate counts the seeds they need.
+      seed_count *= surface_sizing(*context.model, options.sizes, h, options.gradation,
+                                   options.size_field.get())
+                        .seed_factor;
+      asked += " with sizes (" + std::to_string(std::lround(seed_count)) + " seeds)";
     }
     require_memory(
         context,
@@ -420,7 +447,12 @@ class RemeshModule final : public Module {
                                {"thinnest", std::isfinite(r.thinnest_layer) ? nlohmann::json(r.thinnest_layer)
                                                                             : nlohmann::json()},
                                {"edge_length", r.edge_length}};
-    if (!options.sizes.empty()) report["sizes"] = sizes_json(input, result.model, r, context.log);
+    if (options.sized()) {
+      report["sizes"] = sizes_json(input, result.model, r, context.log);
+      if (options.size_field)
+        report["sizes"]["field"] =
+            size_field_json(*options.size_field, input, result.model, context.log);
+    }
     report["refinement"] = refinement_json(result.refinement);
     // The seeds the kept remesh has more than the first one.
     report["repair_refinement"] = {
@@ -563,6 +595,41 @@ class RemeshModule final : public Module {
       log.info(line);
     }
     return {{"edge_length", seeds.edge_length}, {"surfaces", std::move(surfaces)}};
+  }
+
+  /// The output's edges within twice the asked size of a point of the field (the cells around
+  /// it), against that size.
+  static nlohmann::json size_field_json(const SizeField& field, const StructuralModel& input,
+                                        const StructuralModel& output, Logger& log) {
+    const Vec3 shift = output.frame.origin - input.frame.origin;  // output local -> input local
+    std::unordered_set<std::uint64_t> seen;
+    long edges = 0;
+    double length = 0.0, asked = 0.0;
+    const ModelTriangles flat = flatten(output);
+    for (const Triangle& f : flat.triangles)
+      for (int i = 0; i < 3; ++i) {
+        const int a = f[i], b = f[(i + 1) % 3];
+        if (!seen.insert(edge_key(a, b)).second) continue;
+        const Vec3 pa = output.vertices[a] + shift, pb = output.vertices[b] + shift;
+        const int p = field.nearest(0.5 * (pa + pb));
+        const double h = field.sizes()[p];
+        if ((0.5 * (pa + pb) - field.points()[p]).norm() > 2.0 * h) continue;
+        ++edges;
+        length += (pb - pa).norm();
+        asked += h;
+      }
+    const double mean = edges > 0 ? length / edges : 0.0, want = edges > 0 ? asked / edges : 0.0;
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "remesh: size field of %zu points: %ld edges within two sizes of them, mean %.4g "
+                  "against %.4g asked (%+.1f %%)",
+                  field.points().size(), edges, mean, want,
+                  edges > 0 ? 100.0 * (mean / want - 1.0) : 0.0);
+    log.info(line);
+    return {{"points", field.points().size()},
+            {"edges_near", edges},
+            {"asked", want},
+            {"realised", mean}};
   }
 
   static nlohmann::json refinement_json(const BallRefinementResult& refinement) {

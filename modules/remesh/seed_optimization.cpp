@@ -21,7 +21,7 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   const auto t0 = Clock::now();
   ProgressStep step(progress, "remesh: seed sampling");
   std::vector<double> density = options.vertex_density;
-  if ((options.thin_layers || !options.sizes.empty()) && !density.empty())
+  if ((options.thin_layers || options.sized()) && !density.empty())
     throw ParameterError("remesh: a density and the sizings exclude each other");
   ModelGeometry geometry(model, density);
   int n = options.num_seeds;
@@ -35,7 +35,8 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
   LayerSizing layers;
   SurfaceSizing sized;
   const double h = edge_length_for_seeds(geometry.area(), n);
-  if (!options.sizes.empty()) sized = surface_sizing(model, options.sizes, h, options.gradation);
+  if (options.sized())
+    sized = surface_sizing(model, options.sizes, h, options.gradation, options.size_field.get());
   if (options.thin_layers) layers = thin_layer_sizing(model, h, options.layer_sizing);
   std::vector<double> size = sized.size;
   if (layers.refines()) {
@@ -51,10 +52,11 @@ SeedOptimizationResult optimize_seeds(const StructuralModel& model, const SeedOp
     if (!(seeds < 2147483647.0)) throw ParameterError("remesh: the sizes give too many seeds");
     const int before = n;
     n = std::max(1, static_cast<int>(seeds));
-    if (!options.sizes.empty()) {
+    if (options.sized()) {
       std::snprintf(line, sizeof line,
-                    "remesh: sizes: %zu rules, graded by %.3g, %d seeds instead of %d",
-                    options.sizes.size(), options.gradation, n, before);
+                    "remesh: sizes: %zu rules%s, graded by %.3g, %d seeds instead of %d",
+                    options.sizes.size(), options.size_field ? " and a size field" : "",
+                    options.gradation, n, before);
       log.info(line);
     }
     if (layers.refines()) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,9 @@ struct SeedOptions {
   /// thin-layer sizing the smaller size wins. The seed count follows: as many seeds where the
   /// size is the resolution's as it asks for. Not with a vertex_density.
   std::vector<SizeRule> sizes;
+  std::shared_ptr<const SizeField> size_field;  // sizes at points (size_field.h), or null
   double gradation = 1.3;
+  bool sized() const { return !sizes.empty() || size_field != nullptr; }
   std::uint64_t random_seed = 1;       // initial sampling
   OptimizerOptions optimizer;          // kind, iterations (default 100), gradient threshold
   /// α in F = (1 − α) F_CVT + α F_B. Negative: from the gradient-norm ratio at the initial

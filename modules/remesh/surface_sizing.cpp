@@ -3,6 +3,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include "framework/core/edge_key.h"
 #include "framework/core/error.h"
+#include "framework/model/surface_bisection.h"
 
 namespace voroseal {
 
@@ -168,7 +170,7 @@ std::vector<double> mean_edge_per_interface(const StructuralModel& model) {
 }
 
 SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<SizeRule>& rules,
-                             double h, double gradation) {
+                             double h, double gradation, const SizeField* field) {
   if (!(h > 0.0) || !std::isfinite(h))
     throw ParameterError("remesh: the edge length must be positive");
   if (!(gradation >= 1.0) || !std::isfinite(gradation))
@@ -204,6 +206,9 @@ SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<Siz
       for (int v : model.parts[p].model_vertex) sizing.size[v] = std::min(sizing.size[v], h);
   for (double& s : sizing.size)
     if (!std::isfinite(s)) s = h;
+  if (field != nullptr)
+    for (size_t v = 0; v < sizing.size.size(); ++v)
+      sizing.size[v] = std::min(sizing.size[v], field->size_at(model.vertices[v], gradation - 1.0));
   // A vertex shared by a fine and a coarse surface already has the fine size: the coarse
   // surface then grades away from the contact.
   grade_sizes_along_edges(model, gradation - 1.0, sizing.size);
@@ -230,6 +235,27 @@ SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<Siz
     sizing.interface_target[i] = per_area[i] > 0.0 ? per_length[i] / per_area[i] : h;
   if (area_sum > 0.0) sizing.seed_factor = cells / area_sum;
   return sizing;
+}
+
+int refine_for_sizes(StructuralModel& model, const std::vector<SizeRule>& rules, double h,
+                     double gradation, const SizeField* field) {
+  constexpr int kMaxRounds = 8;  // each round halves the edges it splits
+  int split = 0;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const std::vector<double> size = surface_sizing(model, rules, h, gradation, field).size;
+    std::vector<std::array<int, 2>> edges;
+    const ModelTriangles flat = flatten(model);
+    for (const Triangle& f : flat.triangles)
+      for (int i = 0; i < 3; ++i) {
+        const int a = f[i], b = f[(i + 1) % 3];
+        const double s = std::min(size[a], size[b]);
+        // Both orientations of an inner edge come; the second finds it split and skips it.
+        if (s < h && (model.vertices[a] - model.vertices[b]).norm() > s) edges.push_back({a, b});
+      }
+    if (edges.empty()) break;
+    split += bisect_edges(model, edges);
+  }
+  return split;
 }
 
 }  // namespace voroseal

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "framework/model/structural_model.h"
+#include "modules/remesh/size_field.h"
 
 namespace voroseal {
 
@@ -41,11 +42,20 @@ struct SurfaceSizing {
   double seed_factor = 1.0;
 };
 
-/// Target edge lengths for `rules` over a remesh of edge length `h`, graded by `gradation` ≥ 1.
+/// Target edge lengths for `rules` and `field` (may be null; it only refines: the smallest size
+/// wins) over a remesh of edge length `h`, graded by `gradation` ≥ 1.
 /// \throws ParameterError when a rule names nothing in the model (the names are listed), or
 ///         when h or the gradation is out of range.
 SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<SizeRule>& rules,
-                             double h, double gradation);
+                             double h, double gradation, const SizeField* field = nullptr);
+
+/// Bisects the model's edges (surface_bisection.h) where they are longer than the size asked
+/// at their ends, `rules` and `field` graded as surface_sizing() grades them, for at most
+/// kMaxRounds rounds: the CVT density is linear on the input's triangles, so sizes finer than
+/// those triangles (a well through the middle of a large one) need finer triangles. The
+/// surfaces do not move. Returns the number of edges split.
+int refine_for_sizes(StructuralModel& model, const std::vector<SizeRule>& rules, double h,
+                     double gradation, const SizeField* field);
 
 /// Mean edge length of each interface's triangles (an edge shared by two of its parts counted
 /// once; 0 for an interface without triangles): the size a remesh realised.

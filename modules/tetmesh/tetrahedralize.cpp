@@ -18,7 +18,7 @@
 #include "framework/core/error.h"
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
-#include "modules/tetmesh/surface_bisection.h"
+#include "framework/model/surface_bisection.h"
 #include "modules/tetmesh/tet_surface_edges.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"

@@ -9,6 +9,8 @@
 #include <memory>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "framework/core/error.h"
 #include "framework/geometry/surface_distance.h"
 #include "framework/geometry/triangle_quality.h"
@@ -167,6 +169,41 @@ TEST(RemeshModule, SizesPerSurfaceAreRealisedAndReported) {
   }
   EXPECT_THROW(run({{"size", "nothing=0.1"}}), ParameterError);
   EXPECT_THROW(run({{"size", "horizon"}}), ParameterError);
+}
+
+TEST(RemeshModule, SizeFieldRefinesAroundItsPointsOnACoarseInput) {
+  // A vertical well through the middle of a box of 4 x 4 cells per side, sizes of 0.04 along it
+  // under cells of 0.2: the input's triangles are bisected for the sizes, and the edges around
+  // the well (within two sizes of its points) come out near 0.04, graded (the smoothing keeps
+  // the grading).
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("voroseal_well_" + std::to_string(::getpid()) + ".xyz");
+  {
+    std::ofstream out(file);
+    out << "# x y z h\n";
+    for (int k = 0; k <= 20; ++k) out << "0.5 0.5 " << 0.05 * k << " 0.04\n";
+  }
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+  harness.context.model =
+      std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
+  const int input_triangles = harness.context.model->num_triangles();
+  const nlohmann::json values = {{"edge-length", 0.2}, {"size-field", file.string()}};
+  harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
+  std::filesystem::remove(file);
+  const nlohmann::json& r = harness.context.report.at("remesh");
+  EXPECT_TRUE(r.at("valid").get<bool>());
+  EXPECT_TRUE(r.at("topology").at("regions_preserved").get<bool>());
+  const nlohmann::json& field = r.at("sizes").at("field");
+  EXPECT_EQ(field.at("points").get<int>(), 21);
+  EXPECT_NEAR(field.at("asked").get<double>(), 0.04, 1e-12);
+  EXPECT_GT(field.at("edges_near").get<int>(), 30);
+  EXPECT_NEAR(field.at("realised").get<double>(), 0.04, 0.25 * 0.04) << field.dump();
+  EXPECT_GT(input_triangles, 0);
+  EXPECT_THROW(harness.module.run(
+                   harness.context,
+                   Parameters(harness.module.parameters(),
+                              {{"edge-length", 0.2}, {"size-field", "/nonexistent/well.xyz"}})),
+               InputError);
 }
 
 TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {

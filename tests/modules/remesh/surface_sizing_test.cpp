@@ -107,5 +107,72 @@ TEST(SurfaceSizing, ARuleThatNamesNothingIsRefusedWithTheNames) {
   EXPECT_EQ(surface_sizing(model, {{"z*", 0.1}}, 0.25, 1.3).rule_matches, std::vector<int>{2});
 }
 
+TEST(SizeField, SizesGrowFromItsPointsAtTheSlope) {
+  const SizeField field({Vec3(0, 0, 0), Vec3(10, 0, 0)}, {1.0, 4.0});
+  EXPECT_DOUBLE_EQ(field.size_at(Vec3(0, 0, 0), 0.3), 1.0);
+  EXPECT_DOUBLE_EQ(field.size_at(Vec3(0, 3, 0), 0.3), 1.0 + 0.3 * 3.0);
+  // Next to the coarse point the fine one's cone is smaller until 1 + 0.3 d = 4.
+  EXPECT_DOUBLE_EQ(field.size_at(Vec3(9, 0, 0), 0.3), 1.0 + 0.3 * 9.0);
+  EXPECT_DOUBLE_EQ(field.size_at(Vec3(10, 0, 0), 0.3), 4.0);
+  EXPECT_EQ(field.nearest(Vec3(8, 1, 0)), 1);
+  EXPECT_THROW(SizeField({Vec3::Zero()}, {0.0}), ParameterError);
+  EXPECT_THROW(SizeField({}, {}), ParameterError);
+}
+
+TEST(SizeField, OnlyRefinesAndIsGradedAlongTheSurfaces) {
+  // A point of size 0.02 in the middle of the horizon of the unit box, cells of 0.25 elsewhere.
+  const StructuralModel model = build_model(test::lattice_box(8, true));
+  const Vec3 well = Vec3(0.5, 0.5, 0.5) - model.frame.origin;
+  const SizeField field({well}, {0.02});
+  const double h = 0.25, gradation = 1.3;
+  const SurfaceSizing s = surface_sizing(model, {}, h, gradation, &field);
+  for (size_t v = 0; v < model.vertices.size(); ++v) {
+    EXPECT_LE(s.size[v], h);
+    EXPECT_GE(s.size[v], std::min(h, 0.02 + 0.3 * (model.vertices[v] - well).norm()) - 1e-12);
+  }
+  const ModelTriangles flat = flatten(model);
+  for (const Triangle& t : flat.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      EXPECT_LE(std::abs(s.size[a] - s.size[b]),
+                0.3 * (model.vertices[a] - model.vertices[b]).norm() + 1e-12);
+    }
+  // The horizon's vertex at the point gets its size; the box's corners keep h.
+  double at_well = h;
+  for (size_t v = 0; v < model.vertices.size(); ++v)
+    if ((model.vertices[v] - well).norm() < 1e-9) at_well = s.size[v];
+  EXPECT_DOUBLE_EQ(at_well, 0.02);
+  EXPECT_GT(s.seed_factor, 1.0);
+}
+
+TEST(SizeField, InputTrianglesLargerThanTheSizesAreBisected) {
+  // A point inside a horizon triangle (no vertex there): the triangles around it are bisected
+  // until their edges are no longer than the sizes at their ends; the surfaces do not move.
+  StructuralModel model = build_model(test::lattice_box(4, true));
+  const double area = model.area();
+  const size_t triangles = model.num_triangles();
+  const Vec3 well = Vec3(0.3, 0.4, 0.5) - model.frame.origin;
+  const SizeField field({well}, {0.02});
+  const double h = 0.25, gradation = 1.3;
+  const int split = refine_for_sizes(model, {}, h, gradation, &field);
+  EXPECT_GT(split, 0);
+  EXPECT_GT(model.num_triangles(), triangles);
+  EXPECT_NEAR(model.area(), area, 1e-12 * area);
+  const SurfaceSizing s = surface_sizing(model, {}, h, gradation, &field);
+  const ModelTriangles flat = flatten(model);
+  double nearest = 1e30;
+  for (const Triangle& t : flat.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      nearest = std::min(nearest, (model.vertices[a] - well).norm());
+      const double shorter = std::min(s.size[a], s.size[b]);
+      if (shorter < h) EXPECT_LE((model.vertices[a] - model.vertices[b]).norm(), shorter + 1e-12);
+    }
+  EXPECT_LT(nearest, 0.05);  // a vertex came near the point, where the size is asked
+  // Away from the point (sizes of h) nothing was split: the model stays as coarse as it was.
+  StructuralModel coarse = build_model(test::lattice_box(4, true));
+  EXPECT_EQ(refine_for_sizes(coarse, {}, h, gradation, nullptr), 0);
+}
+
 }  // namespace
 }  // namespace voroseal

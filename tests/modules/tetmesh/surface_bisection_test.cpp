@@ -1,4 +1,4 @@
-#include "modules/tetmesh/surface_bisection.h"
+#include "framework/model/surface_bisection.h"
 
 #include <gtest/gtest.h>
 

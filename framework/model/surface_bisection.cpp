@@ -1,4 +1,4 @@
-#include "modules/tetmesh/surface_bisection.h"
+#include "framework/model/surface_bisection.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -17,14 +17,16 @@ using EdgeKey = std::uint64_t;  // see edge_key()
 /// edge (several parts share the edges of a contact: all of them are split together).
 class Bisector {
  public:
-  explicit Bisector(StructuralModel& model) : model_(model), faces_(model.parts.size()), part_midpoint_(model.parts.size()) {
+  explicit Bisector(StructuralModel& model)
+      : model_(model), faces_(model.parts.size()), part_midpoint_(model.parts.size()) {
     for (size_t p = 0; p < model.parts.size(); ++p) {
       const SurfacePart& part = model.parts[p];
       for (const auto& fh : part.mesh.faces()) {
         const auto h = fh.halfedge();
         const int f = static_cast<int>(faces_[p].size());
         faces_[p].push_back({h.from().idx(), h.to().idx(), h.next().to().idx()});
-        for (int k = 0; k < 3; ++k) incident_[model_edge(static_cast<int>(p), f, k)].push_back({static_cast<int>(p), f});
+        for (int k = 0; k < 3; ++k)
+          incident_[model_edge(static_cast<int>(p), f, k)].push_back({static_cast<int>(p), f});
       }
     }
   }
@@ -71,10 +73,12 @@ class Bisector {
       // Children take their parent's place or come after every original triangle: OpenMesh built
       // the part in this order before, and bisection keeps every vertex's fan in one piece.
       for (const std::array<int, 3>& t : faces_[p]) {
-        const auto face = mesh.add_face(SurfaceMesh::VertexHandle(t[0]), SurfaceMesh::VertexHandle(t[1]),
-                                        SurfaceMesh::VertexHandle(t[2]));
+        const auto face =
+            mesh.add_face(SurfaceMesh::VertexHandle(t[0]), SurfaceMesh::VertexHandle(t[1]),
+                          SurfaceMesh::VertexHandle(t[2]));
         if (!face.is_valid())
-          throw MesherError("surface bisection: part '" + part.name + "' could not be rebuilt (a complex vertex)");
+          throw MesherError("surface bisection: part '" + part.name +
+                            "' could not be rebuilt (a complex vertex)");
       }
       part.mesh = std::move(mesh);
     }
@@ -106,7 +110,9 @@ class Bisector {
     double best_length = -1.0;
     for (int k = 0; k < 3; ++k) {
       const EdgeKey key = model_edge(p, f, k);
-      const double length = (model_.vertices[edge_key_first(key)] - model_.vertices[edge_key_second(key)]).squaredNorm();
+      const double length =
+          (model_.vertices[edge_key_first(key)] - model_.vertices[edge_key_second(key)])
+              .squaredNorm();
       if (length > best_length || (length == best_length && key > best)) {
         best = key;
         best_length = length;
@@ -139,7 +145,8 @@ class Bisector {
     faces_[p][f] = {u, lm, w};
     faces_[p].push_back({lm, v, w});
     std::vector<int>& source = model_.parts[p].source_triangle;
-    if (static_cast<size_t>(f) < source.size()) source.push_back(source[f]);  // the child keeps its origin
+    if (static_cast<size_t>(f) < source.size())
+      source.push_back(source[f]);  // the child keeps its origin
     const int mu = model_vertex(p, u), mv = model_vertex(p, v), mw = model_vertex(p, w);
     replace(edge_key(mv, mw), {p, f}, {p, g});
     incident_[edge_key(mu, m)].push_back({p, f});
@@ -157,10 +164,12 @@ class Bisector {
   }
 
   StructuralModel& model_;
-  std::vector<std::vector<std::array<int, 3>>> faces_;        // per part: local vertex ids
-  std::vector<std::unordered_map<EdgeKey, int>> part_midpoint_;  // per part: local edge -> local midpoint
-  std::unordered_map<EdgeKey, std::vector<std::pair<int, int>>> incident_;  // model edge -> (part, face)
-  std::unordered_map<EdgeKey, int> midpoint_;                                // model edge -> model midpoint
+  std::vector<std::vector<std::array<int, 3>>> faces_;  // per part: local vertex ids
+  std::vector<std::unordered_map<EdgeKey, int>>
+      part_midpoint_;  // per part: local edge -> local midpoint
+  std::unordered_map<EdgeKey, std::vector<std::pair<int, int>>>
+      incident_;                               // model edge -> (part, face)
+  std::unordered_map<EdgeKey, int> midpoint_;  // model edge -> model midpoint
   int splits_ = 0;
 };
 

@@ -1,0 +1,29 @@
+#include "io/size_field_format.h"
+
+#include "framework/core/error.h"
+
+namespace voroseal {
+
+SizeSamples read_size_field(const TextSource& source) {
+  SizeSamples samples;
+  LineReader in(source);
+  while (in.next_nonblank()) {
+    if (in[0].front() == '#') continue;
+    if (in.size() != 4)
+      in.fail("expected 'x y z h' (4 numbers), found " + std::to_string(in.size()) + " tokens");
+    const Vec3 x(in.real(0, "x"), in.real(1, "y"), in.real(2, "z"));
+    const double h = in.real(3, "size h");
+    if (!(h > 0.0)) in.fail("the size h must be positive, found " + quoted_token(in[3]));
+    samples.points.push_back(x);
+    samples.sizes.push_back(h);
+  }
+  if (samples.points.empty())
+    throw InputError(source.name(), 0, "a size field needs at least one point 'x y z h'");
+  return samples;
+}
+
+SizeSamples read_size_field(const std::string& path) {
+  return read_size_field(load_text(path));
+}
+
+}  // namespace voroseal

@@ -1,0 +1,25 @@
+// Size fields (`remesh --size-field FILE`): the edge lengths a user wants at points of space,
+// one point per line, `x y z h` in the model's file coordinates, blank-separated; blank lines
+// and lines starting with '#' are skipped. A well path sampled every few metres with the size
+// wanted around it, or a coarse grid of sizes, both read this way.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/core/types.h"
+#include "io/line_reader.h"
+
+namespace voroseal {
+
+struct SizeSamples {
+  std::vector<Vec3> points;   // file coordinates
+  std::vector<double> sizes;  // positive, finite, one per point
+};
+
+/// \throws InputError (file:line) for a line that is not four finite numbers, a size that is
+///         not positive, or a file without points.
+SizeSamples read_size_field(const TextSource& source);
+SizeSamples read_size_field(const std::string& path);
+
+}  // namespace voroseal
