@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 
+#include "modules/remesh/size_field.h"
 #include "modules/remesh/point_cloud.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_sampling.h"
@@ -163,7 +164,8 @@ void add_spot_seeds(const std::vector<Vec3>& existing, const std::vector<Spot>& 
 
 // With the sizes lowered (`factor`), the density follows; seeds go in every spot and where the
 // density rose, in proportion to the integral of sqrt(rho) so that cells elsewhere keep their
-// size, and all seeds are optimised again. Returns the seeds added.
+// size, and the seeds where the sizes were lowered are optimised again. Returns the seeds
+// added.
 int add_seeds_and_optimize(const StructuralModel& model, const std::vector<double>& base_density,
                            const std::vector<double>& factor, const std::vector<Spot>& spots,
                            const SeedOptions& options, const BallRefinementOptions& refine,
@@ -182,8 +184,18 @@ int add_seeds_and_optimize(const StructuralModel& model, const std::vector<doubl
       sample_growth(geometry, before, density, drawn, options.random_seed + round + 1);
   initial.insert(initial.end(), more.begin(), more.end());
   const int added = static_cast<int>(initial.size()) - n;
+  // Only the seeds where the sizes were lowered move (and the new ones): elsewhere the density
+  // is the one they were optimised for, and moving them would remake the mesh there, with new
+  // defects, each round (docs/benchmarks.md).
+  SeedOptions local = options;
+  local.optimizer.fixed.assign(initial.size(), 0);
+  {
+    const SizeField lowered(geometry.vertices(), factor);
+    for (int s = 0; s < n; ++s)
+      local.optimizer.fixed[s] = lowered.sizes()[lowered.nearest(initial[s])] >= 1.0;
+  }
   if (refine.lloyd_iterations > 0) {
-    SeedOptions lloyd = options;
+    SeedOptions lloyd = local;
     lloyd.optimizer.kind = OptimizerKind::Lloyd;
     lloyd.optimizer.max_iterations = refine.lloyd_iterations;
     SeedOptimizationResult parted =
@@ -191,7 +203,7 @@ int add_seeds_and_optimize(const StructuralModel& model, const std::vector<doubl
     initial = std::move(parted.seeds);
     seeds.optimization_seconds += parted.optimization_seconds;
   }
-  SeedOptions again = options;
+  SeedOptions again = local;
   again.optimizer.max_iterations = refine.iterations;
   again.boundary_weight = seeds.alpha;
   SeedOptimizationResult next = optimize_seeds(geometry, std::move(initial), again, log, progress);

@@ -94,6 +94,7 @@ class ScaledProblem {
     fscale_ = g.area() * h_ * h_;
     seeds_ = start;
     best_seeds_ = start;
+    if (!options.fixed.empty()) start_ = start;
   }
 
   Eigen::VectorXd to_x(const std::vector<Vec3>& seeds) const {
@@ -103,7 +104,8 @@ class ScaledProblem {
   }
   void to_seeds(const double* x, std::vector<Vec3>& seeds) const {
     seeds.resize(n_);
-    for (int i = 0; i < n_; ++i) seeds[i] = centre_ + h_ * Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    for (int i = 0; i < n_; ++i)
+      seeds[i] = is_fixed(i) ? start_[i] : centre_ + h_ * Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
   }
 
   // F̂(x) and ∇F̂(x). A non-finite trial point (a wild line-search step) gets F = +inf, which
@@ -116,6 +118,7 @@ class ScaledProblem {
       }
     to_seeds(x, seeds_);
     const double f = objective_.evaluate(seeds_, gradient_);
+    hold_fixed(gradient_);
     const double gs = h_ / fscale_;
     if (grad != nullptr)
       for (int i = 0; i < n_; ++i)
@@ -148,6 +151,7 @@ class ScaledProblem {
     std::vector<Vec3> current = seeds;
     for (int it = 0;; ++it) {
       const double f = objective_.evaluate(current, gradient_);
+      hold_fixed(gradient_);
       const double gnorm = norm(gradient_);
       remember(f / fscale_, f);
       record(it, f, gnorm);
@@ -164,7 +168,7 @@ class ScaledProblem {
       }
       const EnergyEvaluation& e = objective_.last();
       for (int i = 0; i < n_; ++i)
-        if (e.mass[i] > 0.0) current[i] = e.centroid[i];
+        if (e.mass[i] > 0.0 && !is_fixed(i)) current[i] = e.centroid[i];
     }
     run.history = history_;
     run.evaluations = objective_.evaluations();
@@ -180,6 +184,15 @@ class ScaledProblem {
   Logger& log() { return log_; }
 
  private:
+  std::vector<Vec3> start_;  // where the fixed seeds stay (scaling back and forth rounds)
+  bool is_fixed(int i) const {
+    return static_cast<size_t>(i) < options_.fixed.size() && options_.fixed[i] != 0;
+  }
+  // A fixed seed's gradient is zero: no optimiser moves it, and the stop tests ignore it.
+  void hold_fixed(std::vector<Vec3>& gradient) const {
+    for (int i = 0; i < n_; ++i)
+      if (is_fixed(i)) gradient[i].setZero();
+  }
   // Terms of recent evaluations, to report F_CVT and F_B of the point an optimiser accepted
   // (the accepted point is almost always the last evaluated one, but not by contract).
   struct Terms {

@@ -33,6 +33,9 @@ struct OptimizerOptions {
   int max_iterations = 100;
   double gradient_threshold = 1e-6;  // relative to the gradient norm at the start
   int lbfgs_memory = 7;              // corrections kept by L-BFGS
+  /// Seeds that stay where they are (their gradient is taken as zero); empty: all move. A
+  /// repair round re-optimises the seeds around the places it refined, not the others.
+  std::vector<char> fixed;
 };
 
 /// F = (1 − α) F_CVT + α F_B on top of a SeedEnergy. α is fixed at construction, so F is one

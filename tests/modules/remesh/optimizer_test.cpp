@@ -174,6 +174,31 @@ TEST(Optimizer, CeresAndLbfgsReachTheSameEnergy) {
   EXPECT_LT(fb, 0.5 * b.run.history.front().energy);
 }
 
+TEST(Optimizer, FixedSeedsStayAndTheOthersStillLowerTheEnergy) {
+  // Every other seed held: L-BFGS and Lloyd move the free ones only, and still lower F.
+  const StructuralModel model = build_model(test::box_with_crossing_planes(4));
+  const ModelGeometry geometry(model);
+  const std::vector<Vec3> start = sample_seeds(geometry, 300, 3);
+  Logger log = quiet_logger();
+  Progress progress(false);
+  for (const OptimizerKind kind : {OptimizerKind::Lbfgs, OptimizerKind::Lloyd}) {
+    SeedOptions options;
+    options.optimizer.kind = kind;
+    options.optimizer.max_iterations = 20;
+    options.optimizer.fixed.assign(start.size(), 0);
+    for (size_t s = 0; s < start.size(); s += 2) options.optimizer.fixed[s] = 1;
+    const SeedOptimizationResult r = optimize_seeds(geometry, start, options, log, progress);
+    ASSERT_EQ(r.seeds.size(), start.size());
+    int moved = 0;
+    for (size_t s = 0; s < start.size(); ++s) {
+      if (s % 2 == 0) EXPECT_EQ(r.seeds[s], start[s]) << "fixed seed " << s << " moved";
+      moved += r.seeds[s] != start[s];
+    }
+    EXPECT_GT(moved, 100) << to_string(kind);
+    EXPECT_LT(r.run.history.back().energy, r.run.history.front().energy) << to_string(kind);
+  }
+}
+
 TEST(Optimizer, StopsAtTheGradientThreshold) {
   const StructuralModel model = build_model(test::flat_square(10));
   SeedOptions options;
