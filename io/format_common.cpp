@@ -100,6 +100,15 @@ void validate_volume_mesh(const VolumeMesh& mesh, const std::string& file) {
     for (int v : mesh.triangles[t])
       if (v < 0 || v >= nv)
         throw InputError(file, 0, "triangle " + std::to_string(t + 1) + " has vertex index out of range");
+  for (size_t e = 0; e < mesh.edges.size(); ++e)
+    for (int v : mesh.edges[e])
+      if (v < 0 || v >= nv)
+        throw InputError(file, 0,
+                         "edge " + std::to_string(e + 1) + " has vertex index out of range");
+  for (size_t c = 0; c < mesh.corners.size(); ++c)
+    if (mesh.corners[c] < 0 || mesh.corners[c] >= nv)
+      throw InputError(file, 0,
+                       "corner " + std::to_string(c + 1) + " has vertex index out of range");
   if (mesh.tets.empty()) throw InputError(file, 0, "no tetrahedra");
 }
 

@@ -45,7 +45,8 @@ double tet_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 std::vector<int> ids_from_refs(const std::vector<long long>& refs, const std::string& prefix, size_t limit,
                                std::vector<std::string>& names);
 
-/// Volume mesh checks shared by every volume reader: indices in range, ids >= 0.
+/// Volume mesh checks shared by every volume reader: indices of tets, triangles, edges and
+/// corners in range, ids >= 0.
 /// \throws InputError(file, 0, ...)
 void validate_volume_mesh(const VolumeMesh& mesh, const std::string& file);
 

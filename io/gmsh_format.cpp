@@ -4,6 +4,7 @@
 
 #include "io/format_common.h"
 #include "io/gmsh_reader.h"
+#include "io/tag_names.h"
 
 namespace voroseal {
 
@@ -35,59 +36,88 @@ std::string quoted_name(const std::string& name, const std::string& fallback) {
   return "\"" + out + "\"";
 }
 
+// One elementary entity of a dimension: its tag, the physical group it belongs to, and the
+// elements it holds.
+struct MshEntity {
+  int tag = 0;
+  int physical = 0;
+  std::vector<int> elements;
+};
+
 struct MshContent {
   const std::vector<Vec3>& local;
   Vec3 origin;
   const std::vector<Triangle>& triangles;
-  std::vector<int> triangle_surface;
   const std::vector<Tetrahedron>& tets;
-  std::vector<int> tet_region;
-  std::vector<std::string> surface_names;  // one per surface id
-  std::vector<std::string> region_names;   // one per region id
+  std::vector<MshEntity> surfaces;         // triangles, one entity per surface part
+  std::vector<MshEntity> volumes;          // tets, one entity per region
+  std::vector<std::string> surface_names;  // physical name per surface id (tag = id + 1)
+  std::vector<std::string> region_names;
+  const std::vector<Edge>* edges = nullptr;  // contact segments (line elements)
+  std::vector<MshEntity> curves;             // one entity per contact id
+  std::vector<std::string> contact_names;
+  const std::vector<int>* corners = nullptr;  // corner vertices (point elements)
+  std::vector<MshEntity> points;              // one entity per corner point
+  std::vector<std::string> corner_names;
 };
 
+// Entities holding the elements of each id (tag = physical = id + 1), empty ones left out.
+std::vector<MshEntity> entity_per_id(const std::vector<int>& ids, size_t count) {
+  std::vector<MshEntity> entities(count);
+  for (size_t e = 0; e < count; ++e) entities[e].tag = entities[e].physical = int(e) + 1;
+  for (size_t k = 0; k < ids.size(); ++k) entities[ids[k]].elements.push_back(int(k));
+  return entities;
+}
+
+void write_physical_names(const std::vector<std::string>& names, int dim, const char* fallback,
+                          std::ostream& out) {
+  for (size_t s = 0; s < names.size(); ++s)
+    out << dim << ' ' << s + 1 << ' ' << quoted_name(names[s], fallback + std::to_string(s))
+        << "\n";
+}
+
 void write_content(const MshContent& c, std::ostream& out, int precision) {
-  const size_t ns = c.surface_names.size(), nr = c.region_names.size();
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  out << "$PhysicalNames\n" << ns + nr << "\n";
-  for (size_t s = 0; s < ns; ++s)
-    out << "2 " << s + 1 << ' ' << quoted_name(c.surface_names[s], "surface_" + std::to_string(s))
-        << "\n";
-  for (size_t r = 0; r < nr; ++r)
-    out << "3 " << r + 1 << ' ' << quoted_name(c.region_names[r], "region_" + std::to_string(r))
-        << "\n";
+  out << "$PhysicalNames\n"
+      << c.corner_names.size() + c.contact_names.size() + c.surface_names.size() +
+             c.region_names.size()
+      << "\n";
+  write_physical_names(c.corner_names, 0, "corner_", out);
+  write_physical_names(c.contact_names, 1, "contact_", out);
+  write_physical_names(c.surface_names, 2, "surface_", out);
+  write_physical_names(c.region_names, 3, "region_", out);
   out << "$EndPhysicalNames\n";
 
-  // Bounding boxes of every entity from its elements (file coordinates).
-  std::vector<BoundingBox> sbox(ns), rbox(nr);
-  std::vector<std::vector<int>> by_surface(ns), by_region(nr);
-  for (size_t f = 0; f < c.triangles.size(); ++f) {
-    const int s = c.triangle_surface[f];
-    by_surface[s].push_back(static_cast<int>(f));
-    for (int v : c.triangles[f]) sbox[s].extend(c.local[v] + c.origin);
-  }
-  for (size_t t = 0; t < c.tets.size(); ++t) {
-    const int r = c.tet_region[t];
-    by_region[r].push_back(static_cast<int>(t));
-    for (int v : c.tets[t]) rbox[r].extend(c.local[v] + c.origin);
-  }
-  auto box = [&](const BoundingBox& b) {
+  auto box_of = [&](const MshEntity& e, auto&& element) {
+    BoundingBox b;
+    for (int k : e.elements)
+      for (int v : element(k)) b.extend(c.local[v] + c.origin);
     const Vec3 lo = b.empty() ? Vec3::Zero() : b.min, hi = b.empty() ? Vec3::Zero() : b.max;
     out << Real{lo.x(), precision} << ' ' << Real{lo.y(), precision} << ' '
         << Real{lo.z(), precision} << ' ' << Real{hi.x(), precision} << ' '
         << Real{hi.y(), precision} << ' ' << Real{hi.z(), precision};
   };
-  out << "$Entities\n0 0 " << ns << ' ' << nr << "\n";
-  for (size_t s = 0; s < ns; ++s) {
-    out << s + 1 << ' ';
-    box(sbox[s]);
-    out << " 1 " << s + 1 << " 0\n";
+  auto edge = [&](int k) { return (*c.edges)[k]; };
+  auto triangle = [&](int k) { return c.triangles[k]; };
+  auto tet = [&](int k) { return c.tets[k]; };
+  out << "$Entities\n"
+      << c.points.size() << ' ' << c.curves.size() << ' ' << c.surfaces.size() << ' '
+      << c.volumes.size() << "\n";
+  for (const MshEntity& e : c.points) {
+    const Vec3 x = c.local[(*c.corners)[e.elements.front()]] + c.origin;
+    out << e.tag << ' ' << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' '
+        << Real{x.z(), precision} << " 1 " << e.physical << "\n";
   }
-  for (size_t r = 0; r < nr; ++r) {
-    out << r + 1 << ' ';
-    box(rbox[r]);
-    out << " 1 " << r + 1 << " 0\n";
-  }
+  auto write_entities = [&](const std::vector<MshEntity>& entities, auto&& element) {
+    for (const MshEntity& e : entities) {
+      out << e.tag << ' ';
+      box_of(e, element);
+      out << " 1 " << e.physical << " 0\n";
+    }
+  };
+  write_entities(c.curves, edge);
+  write_entities(c.surfaces, triangle);
+  write_entities(c.volumes, tet);
   out << "$EndEntities\n";
 
   const size_t nv = c.local.size();
@@ -95,7 +125,8 @@ void write_content(const MshContent& c, std::ostream& out, int precision) {
   if (nv == 0) {
     out << "0 0 0 0\n";
   } else {
-    out << "1 " << nv << " 1 " << nv << "\n" << (nr > 0 ? 3 : 2) << " 1 0 " << nv << "\n";
+    out << "1 " << nv << " 1 " << nv << "\n"
+        << (c.volumes.empty() ? 2 : 3) << " 1 0 " << nv << "\n";
     for (size_t v = 0; v < nv; ++v) out << v + 1 << "\n";
     for (const Vec3& p : c.local) {
       const Vec3 x = p + c.origin;
@@ -105,29 +136,31 @@ void write_content(const MshContent& c, std::ostream& out, int precision) {
   }
   out << "$EndNodes\n";
 
-  size_t blocks = 0;
-  for (const auto& b : by_surface) blocks += !b.empty();
-  for (const auto& b : by_region) blocks += !b.empty();
-  const size_t ne = c.triangles.size() + c.tets.size();
+  size_t blocks = 0, ne = 0;
+  for (const auto* entities : {&c.points, &c.curves, &c.surfaces, &c.volumes})
+    for (const MshEntity& e : *entities) {
+      blocks += !e.elements.empty();
+      ne += e.elements.size();
+    }
   out << "$Elements\n" << blocks << ' ' << ne << ' ' << (ne ? 1 : 0) << ' ' << ne << "\n";
   size_t tag = 0;
-  for (size_t s = 0; s < ns; ++s) {
-    if (by_surface[s].empty()) continue;
-    out << "2 " << s + 1 << " 2 " << by_surface[s].size() << "\n";
-    for (int f : by_surface[s]) {
-      const Triangle& t = c.triangles[f];
-      out << ++tag << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
+  // One block per entity: "dim entity type count", then "tag node..." per element.
+  auto write_blocks = [&](const std::vector<MshEntity>& entities, int dim, int type,
+                          auto&& element) {
+    for (const MshEntity& e : entities) {
+      if (e.elements.empty()) continue;
+      out << dim << ' ' << e.tag << ' ' << type << ' ' << e.elements.size() << "\n";
+      for (int k : e.elements) {
+        out << ++tag;
+        for (int v : element(k)) out << ' ' << v + 1;
+        out << "\n";
+      }
     }
-  }
-  for (size_t r = 0; r < nr; ++r) {
-    if (by_region[r].empty()) continue;
-    out << "3 " << r + 1 << " 4 " << by_region[r].size() << "\n";
-    for (int k : by_region[r]) {
-      const Tetrahedron& t = c.tets[k];
-      out << ++tag << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << ' ' << t[3] + 1
-          << "\n";
-    }
-  }
+  };
+  write_blocks(c.points, 0, 15, [&](int k) { return std::array<int, 1>{(*c.corners)[k]}; });
+  write_blocks(c.curves, 1, 1, edge);
+  write_blocks(c.surfaces, 2, 2, triangle);
+  write_blocks(c.volumes, 3, 4, tet);
   out << "$EndElements\n";
 }
 
@@ -149,6 +182,36 @@ std::vector<int> ids_with_names(const std::vector<int>& ids, const std::vector<s
   return out;
 }
 
+// Surface entities of a volume mesh: one per piece (entity tag = part + 1) when every piece
+// lies on one surface, else one per surface; physical tag = surface + 1.
+std::vector<MshEntity> surface_entities(const VolumeMesh& mesh, const std::vector<int>& surface,
+                                        size_t surfaces) {
+  const std::vector<int>& part = mesh.triangle_part;
+  std::vector<int> surface_of_part;
+  bool pieces = part.size() == surface.size() && !part.empty();
+  for (size_t f = 0; pieces && f < part.size(); ++f) {
+    if (part[f] < 0) {
+      pieces = false;
+      break;
+    }
+    if (part[f] >= static_cast<int>(surface_of_part.size()))
+      surface_of_part.resize(part[f] + 1, -1);
+    int& s = surface_of_part[part[f]];
+    pieces = s < 0 || s == surface[f];
+    s = surface[f];
+  }
+  if (!pieces) return entity_per_id(surface, surfaces);
+  std::vector<MshEntity> entities;
+  std::vector<int> entity_of(surface_of_part.size(), -1);
+  for (size_t p = 0; p < surface_of_part.size(); ++p) {
+    if (surface_of_part[p] < 0) continue;
+    entity_of[p] = static_cast<int>(entities.size());
+    entities.push_back(MshEntity{int(p) + 1, surface_of_part[p] + 1, {}});
+  }
+  for (size_t f = 0; f < part.size(); ++f) entities[entity_of[part[f]]].elements.push_back(int(f));
+  return entities;
+}
+
 }  // namespace
 
 SurfaceSoup read_msh(const TextSource& source) {
@@ -160,6 +223,11 @@ SurfaceSoup read_msh(const TextSource& source) {
   std::vector<std::string> names;
   const std::vector<int> ids = ids_and_names(d.triangle_tag, 2, d, "surface_", names);
   group_triangles_by_id(soup, ids, names, "surface_");
+  // A volume mesh's surfaces are named "<kind>:<name>".
+  for (SurfaceGroup& g : soup.groups) {
+    split_kind_prefixed_name(g.name, g.kind, g.name);
+    g.interface = g.name;
+  }
   require_triangles(soup);
   return soup;
 }
@@ -169,9 +237,33 @@ VolumeMesh read_msh_volume(const TextSource& source) {
   VolumeMesh mesh;
   set_volume_vertices(mesh, d.nodes);
   mesh.triangles = std::move(d.triangles);
-  mesh.triangle_surface = ids_and_names(d.triangle_tag, 2, d, "surface_", mesh.surface_names);
+  std::vector<std::string> prefixed;
+  mesh.triangle_surface = ids_and_names(d.triangle_tag, 2, d, "surface_", prefixed);
+  for (const std::string& text : prefixed) {
+    SurfaceKind kind;
+    std::string name;
+    split_kind_prefixed_name(text, kind, name);
+    mesh.surface_names.push_back(name);
+    mesh.surface_kinds.push_back(kind);
+  }
+  // Pieces: the elementary surfaces (entities), when every triangle has one.
+  if (std::all_of(d.triangle_entity.begin(), d.triangle_entity.end(), [](int e) { return e > 0; }))
+    for (int e : d.triangle_entity) {
+      mesh.triangle_part.push_back(e - 1);
+      while (static_cast<int>(mesh.part_names.size()) < e)
+        mesh.part_names.push_back("part_" + std::to_string(mesh.part_names.size()));
+    }
   mesh.tets = std::move(d.tets);
   mesh.tet_region = ids_and_names(d.tet_tag, 3, d, "region_", mesh.region_names);
+  mesh.edges = std::move(d.lines);
+  mesh.edge_contact = ids_and_names(d.line_tag, 1, d, "contact_", mesh.contact_names);
+  mesh.corners = std::move(d.points);
+  mesh.corner_id = ids_and_names(d.point_tag, 0, d, "corner_", mesh.corner_names);
+  // "contact:" and "corner:" lead the names voroseal writes (one name per group in all dims).
+  for (auto [names, prefix] : {std::pair{&mesh.contact_names, std::string("contact:")},
+                               std::pair{&mesh.corner_names, std::string("corner:")}})
+    for (std::string& name : *names)
+      if (name.compare(0, prefix.size(), prefix) == 0) name.erase(0, prefix.size());
   validate_volume_mesh(mesh, source.name());
   return mesh;
 }
@@ -182,8 +274,11 @@ void write_msh(const StructuralModel& model, std::ostream& out, int precision) {
   for (const SurfacePart& p : model.parts) surface_names.push_back(p.name);
   for (const Region& r : model.regions) region_names.push_back(r.name);
   const std::vector<Tetrahedron> no_tets;
-  MshContent c{model.vertices, model.frame.origin, t.triangles, t.part, no_tets, {},
-               surface_names,  region_names};
+  MshContent c{model.vertices, model.frame.origin, t.triangles, no_tets};
+  c.surfaces = entity_per_id(t.part, surface_names.size());
+  c.volumes = entity_per_id({}, region_names.size());
+  c.surface_names = surface_names;
+  c.region_names = region_names;
   write_content(c, out, precision);
 }
 
@@ -196,10 +291,42 @@ void write_msh_volume(const VolumeMesh& mesh, std::ostream& out, int precision) 
   std::vector<std::string> surface_names, region_names;
   surface = ids_with_names(surface, mesh.surface_names, mesh.surface_names.size(), "surface_",
                            surface_names);
+  // Physical names of surfaces: "<kind>:<name>" (tag_names.h).
+  for (size_t s = 0; s < surface_names.size(); ++s)
+    surface_names[s] = kind_prefixed_name(mesh.surface_kind(static_cast<int>(s)), surface_names[s]);
   region =
       ids_with_names(region, mesh.region_names, mesh.region_names.size(), "region_", region_names);
-  MshContent c{mesh.vertices, mesh.frame.origin, mesh.triangles, surface, mesh.tets,
-               region,        surface_names,     region_names};
+  MshContent c{mesh.vertices, mesh.frame.origin, mesh.triangles, mesh.tets};
+  c.surfaces = surface_entities(mesh, surface, surface_names.size());
+  c.volumes = entity_per_id(region, region_names.size());
+  c.surface_names = std::move(surface_names);
+  c.region_names = std::move(region_names);
+  std::vector<int> contact(mesh.edges.size(), 0), corner(mesh.corners.size(), 0);
+  for (size_t e = 0; e < contact.size() && e < mesh.edge_contact.size(); ++e)
+    contact[e] = mesh.edge_contact[e];
+  for (size_t k = 0; k < corner.size() && k < mesh.corner_id.size(); ++k)
+    corner[k] = mesh.corner_id[k];
+  // Contacts and corners named "contact:<name>", "corner:<name>": a name is then unique across
+  // dimensions (meshio keys its field_data by name alone).
+  auto prefixed = [](std::vector<std::string>& names, const std::string& prefix) {
+    for (std::string& name : names) name = prefix + name;
+  };
+  if (!mesh.edges.empty()) {
+    contact = ids_with_names(contact, mesh.contact_names, mesh.contact_names.size(), "contact_",
+                             c.contact_names);
+    prefixed(c.contact_names, "contact:");
+    c.edges = &mesh.edges;
+    c.curves = entity_per_id(contact, c.contact_names.size());
+  }
+  if (!mesh.corners.empty()) {
+    corner = ids_with_names(corner, mesh.corner_names, mesh.corner_names.size(), "corner_",
+                            c.corner_names);
+    prefixed(c.corner_names, "corner:");
+    c.corners = &mesh.corners;
+    // A point entity is one point: one per corner, in the physical group of its id.
+    for (size_t k = 0; k < corner.size(); ++k)
+      c.points.push_back(MshEntity{int(k) + 1, corner[k] + 1, {int(k)}});
+  }
   write_content(c, out, precision);
 }
 

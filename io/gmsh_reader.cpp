@@ -34,8 +34,14 @@ int element_nodes(long long type) {
   }
 }
 
-// Triangles, quadrangles and tetrahedra are kept; points and lines are read and dropped.
+// Points, 2-node lines, triangles, quadrangles and tetrahedra are kept; 3-node lines are read
+// and dropped.
 bool kept(long long type) {
+  return type == 15 || type == 1 || type == 2 || type == 3 || type == 4;
+}
+
+// Points and lines without a positive tag are dropped; the other kinds must have one.
+bool needs_tag(long long type) {
   return type == 2 || type == 3 || type == 4;
 }
 
@@ -407,13 +413,22 @@ class MshParser {
   }
 
   // Stores a kept element (v: its node indices); a quadrangle becomes two triangles.
-  void add_element(long long type, int tag, const int* v) {
-    if (type == 2 || type == 3) {
+  void add_element(long long type, int tag, int entity, const int* v) {
+    if (!needs_tag(type) && tag < 1) return;
+    if (type == 15) {
+      d_.points.push_back(v[0]);
+      d_.point_tag.push_back(tag);
+    } else if (type == 1) {
+      d_.lines.push_back({v[0], v[1]});
+      d_.line_tag.push_back(tag);
+    } else if (type == 2 || type == 3) {
       d_.triangles.push_back({v[0], v[1], v[2]});
       d_.triangle_tag.push_back(tag);
+      d_.triangle_entity.push_back(entity);
       if (type == 3) {
         d_.triangles.push_back({v[0], v[2], v[3]});
         d_.triangle_tag.push_back(tag);
+        d_.triangle_entity.push_back(entity);
       }
     } else if (type == 4) {
       d_.tets.push_back({v[0], v[1], v[2], v[3]});
@@ -440,16 +455,16 @@ class MshParser {
       if (seen > total) in_.fail("element blocks hold more elements than declared");
       if (element_nodes(type) == 0) in_.fail("unsupported element type " + std::to_string(type));
       const int id_tag = entity_tag(dim, entity);
-      if (kept(type) && id_tag < 1)
+      if (needs_tag(type) && id_tag < 1)
         in_.fail("element block of entity " + std::to_string(entity) + " has no positive tag");
-      for (long long i = 0; i < n; ++i) element41(type, id_tag);
+      for (long long i = 0; i < n; ++i) element41(type, id_tag, entity);
     }
     if (seen != total)
       in_.fail("$Elements declares " + std::to_string(total) + " elements but its blocks hold " +
                std::to_string(seen));
   }
 
-  void element41(long long type, int id_tag) {
+  void element41(long long type, int id_tag, int entity) {
     const int nodes = element_nodes(type);
     line("an element");
     if (in_.size() != static_cast<size_t>(nodes) + 1)
@@ -463,7 +478,7 @@ class MshParser {
       else
         in_.integer(1 + k, "node tag");
     }
-    if (kept(type)) add_element(type, id_tag, v);
+    if (kept(type)) add_element(type, id_tag, entity, v);
   }
 
   // Binary: size_t counts; a block is int dim, int entity, int type, size_t count, then per
@@ -486,12 +501,12 @@ class MshParser {
       if (n > total - seen) in_.fail_at_byte(at, "element blocks hold more elements than declared");
       seen += n;
       const int id_tag = entity_tag(dim, entity);
-      if (kept(type) && id_tag < 1)
+      if (needs_tag(type) && id_tag < 1)
         in_.fail_at_byte(
             at, "element block of entity " + std::to_string(entity) + " has no positive tag");
       for (uint64_t i = 0; i < n; ++i) {
         size_value("element tag");
-        element_binary_nodes(type, id_tag, false);
+        element_binary_nodes(type, id_tag, entity, false);
       }
     }
     if (seen != total)
@@ -501,7 +516,7 @@ class MshParser {
 
   // The node tags of a binary element, ints (MSH 2.2) or size_t (MSH 4.1); kept types only
   // are looked up.
-  void element_binary_nodes(long long type, int id_tag, bool int_tags) {
+  void element_binary_nodes(long long type, int id_tag, int entity, bool int_tags) {
     int v[4] = {0, 0, 0, 0};
     const int nodes = element_nodes(type);
     if (!kept(type)) {
@@ -509,7 +524,7 @@ class MshParser {
       return;
     }
     for (int k = 0; k < nodes; ++k) v[k] = binary_node(int_tags);
-    add_element(type, id_tag, v);
+    add_element(type, id_tag, entity, v);
   }
 
   void elements22() {
@@ -535,7 +550,7 @@ class MshParser {
     const int entity = ntags > 1 ? tag(4, "elementary entity tag") : 0;
     for (long long k = 2; k < ntags; ++k) in_.integer(3 + k, "element tag");
     const int id_tag = physical != 0 ? physical : entity;
-    if (kept(type) && id_tag < 1) in_.fail("element has no positive physical or entity tag");
+    if (needs_tag(type) && id_tag < 1) in_.fail("element has no positive physical or entity tag");
     const size_t first = 3 + static_cast<size_t>(ntags);
     int v[4] = {0, 0, 0, 0};
     for (int k = 0; k < nodes; ++k) {
@@ -544,7 +559,7 @@ class MshParser {
       else
         in_.integer(first + k, "node tag");
     }
-    if (kept(type)) add_element(type, id_tag, v);
+    if (kept(type)) add_element(type, id_tag, entity, v);
   }
 
   // Binary: the count as text, then blocks of int type, int count, int ntags followed by that
@@ -576,9 +591,9 @@ class MshParser {
     const int entity = ntags > 1 ? binary_tag("elementary entity tag") : 0;
     in_.skip(kIntBytes * static_cast<uint64_t>(ntags - std::min(ntags, 2)), "element tags");
     const int id_tag = physical != 0 ? physical : entity;
-    if (kept(type) && id_tag < 1)
+    if (needs_tag(type) && id_tag < 1)
       in_.fail_at_byte(at, "element has no positive physical or entity tag");
-    element_binary_nodes(type, id_tag, true);
+    element_binary_nodes(type, id_tag, entity, true);
   }
 
   MshStream in_;

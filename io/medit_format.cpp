@@ -1,5 +1,6 @@
 #include "io/medit_format.h"
 
+#include <array>
 #include <cctype>
 #include <climits>
 #include <map>
@@ -16,17 +17,30 @@ struct MeditMesh {
   std::vector<long long> triangle_refs;
   std::vector<Tetrahedron> tets;
   std::vector<long long> tet_refs;
+  std::vector<long long> vertex_refs;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<long long> edge_refs;
+  std::vector<int> corners;
 };
 
 // Sections skipped, with the number of values of one entry.
 const std::map<std::string_view, int>& skipped_sections() {
-  static const std::map<std::string_view, int> s{
-      {"Edges", 3},           {"Corners", 1},         {"Ridges", 1},
-      {"RequiredVertices", 1}, {"RequiredEdges", 1},   {"RequiredTriangles", 1},
-      {"RequiredQuadrilaterals", 1}, {"RequiredTetrahedra", 1}, {"Normals", 3},
-      {"NormalAtVertices", 2}, {"NormalAtTriangleVertices", 3}, {"NormalAtQuadrilateralVertices", 3},
-      {"Tangents", 3},        {"TangentAtVertices", 2}, {"TangentAtEdges", 3},
-      {"Hexahedra", 9},       {"Prisms", 7},          {"Pyramids", 6}};
+  static const std::map<std::string_view, int> s{{"Ridges", 1},
+                                                 {"RequiredVertices", 1},
+                                                 {"RequiredEdges", 1},
+                                                 {"RequiredTriangles", 1},
+                                                 {"RequiredQuadrilaterals", 1},
+                                                 {"RequiredTetrahedra", 1},
+                                                 {"Normals", 3},
+                                                 {"NormalAtVertices", 2},
+                                                 {"NormalAtTriangleVertices", 3},
+                                                 {"NormalAtQuadrilateralVertices", 3},
+                                                 {"Tangents", 3},
+                                                 {"TangentAtVertices", 2},
+                                                 {"TangentAtEdges", 3},
+                                                 {"Hexahedra", 9},
+                                                 {"Prisms", 7},
+                                                 {"Pyramids", 6}};
   return s;
 }
 
@@ -59,7 +73,7 @@ class MeditParser {
         m_.vertices.reserve(n);
         for (long long i = 0; i < n; ++i) {
           const double x = real_value(section, i, n), y = real_value(section, i, n), z = real_value(section, i, n);
-          ref(section, i, n);
+          m_.vertex_refs.push_back(ref(section, i, n));
           m_.vertices.emplace_back(x, y, z);
         }
       } else if (kw == "Triangles" || kw == "Quadrilaterals") {
@@ -85,6 +99,16 @@ class MeditParser {
           m_.tet_refs.push_back(ref(section, i, n));
           m_.tets.push_back(t);
         }
+      } else if (kw == "Edges") {
+        const long long n = count(section, 3);
+        for (long long i = 0; i < n; ++i) {
+          const int a = index(section, i, n), b = index(section, i, n);
+          m_.edges.push_back({a, b});
+          m_.edge_refs.push_back(ref(section, i, n));
+        }
+      } else if (kw == "Corners") {
+        const long long n = count(section, 1);
+        for (long long i = 0; i < n; ++i) m_.corners.push_back(index(section, i, n));
       } else if (const auto it = skipped_sections().find(kw); it != skipped_sections().end()) {
         const long long n = count(section, it->second);
         for (long long i = 0; i < n; ++i)
@@ -119,8 +143,9 @@ class MeditParser {
   }
 
   static bool is_keyword(std::string_view t) {
-    return t == "End" || t == "Vertices" || t == "Triangles" || t == "Quadrilaterals" || t == "Tetrahedra" ||
-           t == "Dimension" || skipped_sections().count(t) > 0;
+    return t == "End" || t == "Vertices" || t == "Triangles" || t == "Quadrilaterals" ||
+           t == "Tetrahedra" || t == "Edges" || t == "Corners" || t == "Dimension" ||
+           skipped_sections().count(t) > 0;
   }
 
   [[noreturn]] void bad_value(const std::string& section, long long i, long long n, std::string_view t,
@@ -164,12 +189,15 @@ constexpr size_t kNameTableLimit = 1000000;
 
 // The header and the Vertices section (file coordinates: local + origin), shared by the surface
 // and the volume writers.
-void write_header_and_vertices(std::ostream& out, const std::vector<Vec3>& vertices, const Vec3& origin,
-                               int precision) {
+// `refs`: the vertex refs, 0 past its end.
+void write_header_and_vertices(std::ostream& out, const std::vector<Vec3>& vertices,
+                               const Vec3& origin, int precision,
+                               const std::vector<int>& refs = {}) {
   out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << vertices.size() << "\n";
-  for (const Vec3& v : vertices) {
-    const Vec3 x = v + origin;
-    out << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision} << " 0\n";
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const Vec3 x = vertices[i] + origin;
+    out << Real{x.x(), precision} << ' ' << Real{x.y(), precision} << ' ' << Real{x.z(), precision}
+        << ' ' << (i < refs.size() ? refs[i] : 0) << "\n";
   }
 }
 
@@ -195,6 +223,13 @@ VolumeMesh read_medit_volume(const TextSource& source) {
   mesh.tet_region = ids_from_refs(m.tet_refs, "region_", kNameTableLimit, mesh.region_names);
   mesh.triangles = std::move(m.triangles);
   mesh.triangle_surface = ids_from_refs(m.triangle_refs, "surface_", kNameTableLimit, mesh.surface_names);
+  mesh.edges = std::move(m.edges);
+  mesh.edge_contact = ids_from_refs(m.edge_refs, "contact_", kNameTableLimit, mesh.contact_names);
+  // A corner's id is its vertex's ref (what write_medit_volume writes: id + 1).
+  std::vector<long long> corner_refs;
+  for (int v : m.corners) corner_refs.push_back(m.vertex_refs[v]);
+  mesh.corners = std::move(m.corners);
+  mesh.corner_id = ids_from_refs(corner_refs, "corner_", kNameTableLimit, mesh.corner_names);
   validate_volume_mesh(mesh, source.name());
   return mesh;
 }
@@ -210,7 +245,11 @@ void write_medit(const StructuralModel& model, std::ostream& out, int precision)
 }
 
 void write_medit_volume(const VolumeMesh& mesh, std::ostream& out, int precision) {
-  write_header_and_vertices(out, mesh.vertices, mesh.frame.origin, precision);
+  std::vector<int> vertex_refs;
+  if (!mesh.corners.empty()) vertex_refs.assign(mesh.vertices.size(), 0);
+  for (size_t c = 0; c < mesh.corners.size(); ++c)
+    vertex_refs[mesh.corners[c]] = (c < mesh.corner_id.size() ? mesh.corner_id[c] : 0) + 1;
+  write_header_and_vertices(out, mesh.vertices, mesh.frame.origin, precision, vertex_refs);
   out << "\nTriangles\n" << mesh.triangles.size() << "\n";
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const int s = f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0;
@@ -222,6 +261,16 @@ void write_medit_volume(const VolumeMesh& mesh, std::ostream& out, int precision
     const int r = t < mesh.tet_region.size() ? mesh.tet_region[t] : 0;
     out << mesh.tets[t][0] + 1 << ' ' << mesh.tets[t][1] + 1 << ' ' << mesh.tets[t][2] + 1 << ' ' << mesh.tets[t][3] + 1
         << ' ' << r + 1 << "\n";
+  }
+  if (!mesh.edges.empty()) {
+    out << "\nEdges\n" << mesh.edges.size() << "\n";
+    for (size_t e = 0; e < mesh.edges.size(); ++e)
+      out << mesh.edges[e][0] + 1 << ' ' << mesh.edges[e][1] + 1 << ' '
+          << (e < mesh.edge_contact.size() ? mesh.edge_contact[e] : 0) + 1 << "\n";
+  }
+  if (!mesh.corners.empty()) {
+    out << "\nCorners\n" << mesh.corners.size() << "\n";
+    for (int v : mesh.corners) out << v + 1 << "\n";
   }
   out << "\nEnd\n";
 }

@@ -13,6 +13,7 @@
 #include "io/gocad_tsurf.h"
 #include "io/line_reader.h"
 #include "io/medit_format.h"
+#include "io/medit_names.h"
 #include "io/obj_format.h"
 #include "io/tetgen_format.h"
 #include "io/vtk_format.h"
@@ -124,7 +125,13 @@ VolumeMesh read_volume_mesh(const std::string& path) {
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, 0, "is a directory, not a volume mesh");
   const std::string ext = extension(path);
-  if (ext == ".mesh") return read_medit_volume(load_text(path));
+  if (ext == ".mesh") {
+    VolumeMesh mesh = read_medit_volume(load_text(path));
+    // Names and kinds from the sidecar, when there is one (medit_names.h).
+    const std::string names = medit_names_path(path);
+    if (std::filesystem::is_regular_file(names, ec)) apply_medit_names(load_text(names), mesh);
+    return mesh;
+  }
   if (ext == ".vtu") return read_vtu_volume(load_text(path));
   if (ext == ".msh") return read_msh_volume(load_text(path));
   if (ext == ".node" || ext == ".ele" || ext == ".face") {
@@ -175,10 +182,20 @@ void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const Wr
     face.commit();
     return;
   }
+  if (ext == ".mesh") {
+    // The mesh and its names sidecar (medit_names.h), both written before either is renamed.
+    AtomicFile medit(path, options.protected_paths);
+    AtomicFile names(medit_names_path(path), options.protected_paths);
+    write_medit_volume(mesh, medit.stream(), precision);
+    names.stream() << medit_names_text(mesh);
+    medit.close();
+    names.close();
+    medit.commit();
+    names.commit();
+    return;
+  }
   std::function<void(std::ostream&)> write;
-  if (ext == ".mesh")
-    write = [&](std::ostream& out) { write_medit_volume(mesh, out, precision); };
-  else if (ext == ".vtu")
+  if (ext == ".vtu")
     write = [&](std::ostream& out) { write_vtu_volume(mesh, out, precision); };
   else if (ext == ".msh")
     write = [&](std::ostream& out) { write_msh_volume(mesh, out, precision); };

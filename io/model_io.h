@@ -3,7 +3,8 @@
 // Model formats:  .ml (GOCAD Model3d: parts, regions, layers), .ts (GOCAD TSurf),
 //                 .obj (groups), .mesh (Medit triangles with refs; tetrahedra too),
 //                 written also as .vtu (VTK XML) and .msh (Gmsh 4.1).
-// Volume formats: .mesh, .vtu, .msh, and TetGen .node/.ele/.face (give the .node or .ele path).
+// Volume formats: .mesh (with its names in OUT.mesh.json), .vtu, .msh, and TetGen
+//                 .node/.ele/.face (give the .node or .ele path).
 //
 // Readers throw InputError("file:line: message") on malformed input. Writers write a temporary
 // file beside the target and rename it, so a failed write never leaves a partial file, and they

@@ -6,16 +6,74 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <list>
 
 #include "framework/core/error.h"
 #include "io/format_common.h"
+#include "io/tag_names.h"
 #include "io/vtk_binary.h"
 
 namespace voroseal {
 
 namespace {
 
-constexpr int kTriangle = 5, kPolygon = 7, kQuad = 9, kTetra = 10;
+constexpr int kVertex = 1, kLine = 3, kTriangle = 5, kPolygon = 7, kQuad = 9, kTetra = 10;
+
+// Categories of the FieldData names voroseal writes: "<category>:<name>" with [id, dim].
+const char* const kNameCategories[] = {"horizon", "fault",  "boundary", "unconformity", "unknown",
+                                       "part",    "region", "contact",  "corner"};
+bool is_name_array(const std::string& key) {
+  const std::string category = key.substr(0, key.find(':'));
+  if (category.size() == key.size()) return false;
+  for (const char* c : kNameCategories)
+    if (category == c) return true;
+  return false;
+}
+
+// XML character entities of attribute values.
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    switch (ch) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += ch;
+    }
+  }
+  return out;
+}
+
+std::string xml_unescaped(const std::string& text) {
+  static const std::pair<const char*, char> entities[] = {
+      {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    bool replaced = false;
+    for (const auto& [entity, ch] : entities)
+      if (text.compare(i, std::strlen(entity), entity) == 0) {
+        out += ch;
+        i += std::strlen(entity);
+        replaced = true;
+        break;
+      }
+    if (!replaced) out += text[i++];
+  }
+  return out;
+}
 constexpr long long kMaxId = 1000000;  // surface / region ids beyond this are refused
 
 // Just enough XML for VTK files: tags with attributes, comments, declarations, text.
@@ -161,10 +219,17 @@ class XmlScanner {
 struct VtuData {
   long long points_declared = -1, cells_declared = -1;
   std::vector<Vec3> points;
-  std::vector<long long> connectivity, offsets, types, surface, region;
+  std::vector<long long> connectivity, offsets, types, surface, region, part, contact, corner;
   long piece_line = 0;  // line of <Piece>
   long connectivity_line = 0, offsets_line = 0, types_line = 0, surface_line = 0;  // DataArray tags
-  long region_line = 0;
+  long region_line = 0, part_line = 0, contact_line = 0, corner_line = 0;
+  /// FieldData names (tag_names.h: "<category>:<name>") with their [id, dim] values.
+  struct Name {
+    std::string category, name;
+    long long id = -1;
+    long line = 0;
+  };
+  std::vector<Name> names;
 };
 
 // A DataArray the reader uses: its tag and, when inline, the text up to </DataArray>. Arrays
@@ -306,6 +371,13 @@ class VtuParser {
     if (section == "Cells" && key == "types") return &types_;
     if (section == "CellData" && key == "surface") return &surface_;
     if (section == "CellData" && key == "region") return &region_;
+    if (section == "CellData" && key == "part") return &part_;
+    if (section == "CellData" && key == "contact") return &contact_;
+    if (section == "CellData" && key == "corner") return &corner_;
+    if (section == "FieldData" && is_name_array(key)) {
+      names_.emplace_back();
+      return &names_.back();
+    }
     return nullptr;
   }
 
@@ -444,6 +516,20 @@ class VtuParser {
     d_.types = integers(types_, d_.cells_declared, "types");
     d_.surface = integers(surface_, d_.cells_declared, "surface");
     d_.region = integers(region_, d_.cells_declared, "region");
+    d_.part = integers(part_, d_.cells_declared, "part");
+    d_.contact = integers(contact_, d_.cells_declared, "contact");
+    d_.corner = integers(corner_, d_.cells_declared, "corner");
+    d_.part_line = part_.line;
+    d_.contact_line = contact_.line;
+    d_.corner_line = corner_.line;
+    for (const ArrayRef& ref : names_) {
+      const std::vector<long long> v = integers(ref, 2, "a field data name's [id, dim]");
+      if (v.size() != 2)
+        throw InputError(name_, ref.line, "a field data name needs two integers, id and dim");
+      const std::string text = xml_unescaped(*ref.tag.attribute("Name"));
+      const size_t colon = text.find(':');
+      d_.names.push_back({text.substr(0, colon), text.substr(colon + 1), v[0], ref.line});
+    }
     d_.connectivity =
         integers(connectivity_, d_.offsets.empty() ? 0 : d_.offsets.back(), "connectivity");
     d_.connectivity_line = connectivity_.line;
@@ -468,6 +554,12 @@ class VtuParser {
       fail(d_.surface_line, "cell data \"surface\" must have one value per cell");
     if (!d_.region.empty() && d_.region.size() != nc)
       fail(d_.region_line, "cell data \"region\" must have one value per cell");
+    if (!d_.part.empty() && d_.part.size() != nc)
+      fail(d_.part_line, "cell data \"part\" must have one value per cell");
+    if (!d_.contact.empty() && d_.contact.size() != nc)
+      fail(d_.contact_line, "cell data \"contact\" must have one value per cell");
+    if (!d_.corner.empty() && d_.corner.size() != nc)
+      fail(d_.corner_line, "cell data \"corner\" must have one value per cell");
     long long previous = 0;
     for (long long o : d_.offsets) {
       if (o < previous || o > static_cast<long long>(d_.connectivity.size()))
@@ -486,15 +578,20 @@ class VtuParser {
   XmlScanner xml_;
   std::string name_;
   BinaryLayout layout_;
-  ArrayRef points_, connectivity_, offsets_, types_, surface_, region_;
+  ArrayRef points_, connectivity_, offsets_, types_, surface_, region_, part_, contact_, corner_;
+  std::list<ArrayRef> names_;  // FieldData names (stable addresses while they are filled)
   VtuData d_;
 };
 
 struct VtuCells {
   std::vector<Triangle> triangles;
-  std::vector<long long> triangle_surface;
+  std::vector<long long> triangle_surface, triangle_part;
   std::vector<Tetrahedron> tets;
   std::vector<long long> tet_region;
+  std::vector<Edge> edges;  // line cells
+  std::vector<long long> edge_contact;
+  std::vector<int> corners;  // vertex cells
+  std::vector<long long> corner_id;
 };
 
 VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
@@ -519,6 +616,7 @@ VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
         c.triangles.push_back(
             {static_cast<int>(v[0]), static_cast<int>(v[i]), static_cast<int>(v[i + 1])});
         c.triangle_surface.push_back(surface);
+        if (!d.part.empty()) c.triangle_part.push_back(d.part[k]);
       }
     } else if (type == kTetra) {
       need(4);
@@ -527,7 +625,19 @@ VtuCells cells_of(const VtuData& d, const std::string& file, bool volume) {
                           static_cast<int>(v[3])});
         c.tet_region.push_back(d.region.empty() ? 0 : d.region[k]);
       }
-    } else if (type != 1 && type != 2 && type != 3 && type != 4) {
+    } else if (type == kLine) {
+      need(2);
+      if (volume) {
+        c.edges.push_back({static_cast<int>(v[0]), static_cast<int>(v[1])});
+        c.edge_contact.push_back(d.contact.empty() ? 0 : d.contact[k]);
+      }
+    } else if (type == kVertex) {
+      need(1);
+      if (volume) {
+        c.corners.push_back(static_cast<int>(v[0]));
+        c.corner_id.push_back(d.corner.empty() ? 0 : d.corner[k]);
+      }
+    } else if (type != 2 && type != 4) {
       throw InputError(file, d.types_line, "unsupported VTK cell type " + std::to_string(type));
     }
   }
@@ -551,21 +661,42 @@ std::vector<int> checked_ids(const std::vector<long long>& ids, const std::strin
   return out;
 }
 
-void write_header(std::ostream& out, size_t points, size_t cells, bool ascii) {
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\""
-      << (ascii ? "" : " compressor=\"vtkZLibDataCompressor\"") << ">\n"
-      << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
-}
-
 // One inline DataArray of `values`, zlib-compressed and base64-encoded as VTK writes it.
 template <class T>
 void write_binary(std::ostream& out, const std::string& attributes, const std::vector<T>& values) {
   const std::vector<unsigned char> bytes = little_endian_bytes(values);
   out << "        <DataArray " << attributes << " format=\"binary\">\n          "
       << vtk_zlib_base64(bytes.data(), bytes.size()) << "\n        </DataArray>\n";
+}
+
+// A name of the FieldData: "<category>:<name>" with the values id and dim.
+struct FieldName {
+  std::string text;
+  int id = 0, dim = 0;
+};
+
+void write_header(std::ostream& out, size_t points, size_t cells, bool ascii,
+                  const std::vector<FieldName>& names = {}) {
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\""
+      << (ascii ? "" : " compressor=\"vtkZLibDataCompressor\"") << ">\n"
+      << "  <UnstructuredGrid>\n";
+  if (!names.empty()) {
+    out << "    <FieldData>\n";
+    for (const FieldName& n : names) {
+      const std::string attributes = "type=\"Int32\" Name=\"" + xml_escaped(n.text) +
+                                     "\" NumberOfTuples=\"1\" NumberOfComponents=\"2\"";
+      if (!ascii) {
+        write_binary(out, attributes, std::vector<int32_t>{n.id, n.dim});
+        continue;
+      }
+      out << "        <DataArray " << attributes << " format=\"ascii\">" << n.id << ' ' << n.dim
+          << "</DataArray>\n";
+    }
+    out << "    </FieldData>\n";
+  }
+  out << "    <Piece NumberOfPoints=\"" << points << "\" NumberOfCells=\"" << cells << "\">\n";
 }
 
 void write_points(std::ostream& out, const std::vector<Vec3>& local, const Vec3& origin,
@@ -592,52 +723,44 @@ void write_points(std::ostream& out, const std::vector<Vec3>& local, const Vec3&
   out << "      </Points>\n";
 }
 
-void write_cells_ascii(std::ostream& out, const std::vector<Triangle>& triangles,
-                       const std::vector<Tetrahedron>& tets) {
-  out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const Triangle& t : triangles)
-    out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  for (const Tetrahedron& t : tets)
-    out << "          " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  long long offset = 0;
-  for (size_t i = 0; i < triangles.size(); ++i) out << "          " << (offset += 3) << '\n';
-  for (size_t i = 0; i < tets.size(); ++i) out << "          " << (offset += 4) << '\n';
-  out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
-         "format=\"ascii\">\n";
-  for (size_t i = 0; i < triangles.size(); ++i) out << "          " << kTriangle << '\n';
-  for (size_t i = 0; i < tets.size(); ++i) out << "          " << kTetra << '\n';
-  out << "        </DataArray>\n";
-}
-
-void write_cells_binary(std::ostream& out, const std::vector<Triangle>& triangles,
-                        const std::vector<Tetrahedron>& tets) {
+// The cells of a file: VTK's three Cells arrays.
+struct VtuCellArrays {
   std::vector<int64_t> connectivity, offsets;
   std::vector<uint8_t> types;
-  connectivity.reserve(3 * triangles.size() + 4 * tets.size());
-  for (const Triangle& t : triangles) {
-    connectivity.insert(connectivity.end(), {t[0], t[1], t[2]});
-    offsets.push_back(static_cast<int64_t>(connectivity.size()));
-    types.push_back(kTriangle);
+  template <class Cell>
+  void add(const std::vector<Cell>& cells, uint8_t type) {
+    for (const Cell& cell : cells) {
+      connectivity.insert(connectivity.end(), cell.begin(), cell.end());
+      offsets.push_back(static_cast<int64_t>(connectivity.size()));
+      types.push_back(type);
+    }
   }
-  for (const Tetrahedron& t : tets) {
-    connectivity.insert(connectivity.end(), {t[0], t[1], t[2], t[3]});
-    offsets.push_back(static_cast<int64_t>(connectivity.size()));
-    types.push_back(kTetra);
-  }
-  write_binary(out, "type=\"Int64\" Name=\"connectivity\"", connectivity);
-  write_binary(out, "type=\"Int64\" Name=\"offsets\"", offsets);
-  write_binary(out, "type=\"UInt8\" Name=\"types\"", types);
-}
+};
 
-void write_cells(std::ostream& out, const std::vector<Triangle>& triangles,
-                 const std::vector<Tetrahedron>& tets, bool ascii) {
+void write_cells(std::ostream& out, const VtuCellArrays& c, bool ascii) {
   out << "      <Cells>\n";
-  if (ascii)
-    write_cells_ascii(out, triangles, tets);
-  else
-    write_cells_binary(out, triangles, tets);
+  if (!ascii) {
+    write_binary(out, "type=\"Int64\" Name=\"connectivity\"", c.connectivity);
+    write_binary(out, "type=\"Int64\" Name=\"offsets\"", c.offsets);
+    write_binary(out, "type=\"UInt8\" Name=\"types\"", c.types);
+  } else {
+    // One cell a line.
+    out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    int64_t begin = 0;
+    for (int64_t end : c.offsets) {
+      out << "         ";
+      for (int64_t i = begin; i < end; ++i) out << ' ' << c.connectivity[i];
+      out << '\n';
+      begin = end;
+    }
+    out << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (int64_t o : c.offsets) out << "          " << o << '\n';
+    out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (uint8_t t : c.types) out << "          " << int(t) << '\n';
+    out << "        </DataArray>\n";
+  }
   out << "      </Cells>\n";
 }
 
@@ -669,7 +792,9 @@ void write_model_vtu(const StructuralModel& model, std::ostream& out, int precis
   const ModelTriangles t = flatten(model);
   write_header(out, model.vertices.size(), t.triangles.size(), ascii);
   write_points(out, model.vertices, model.frame.origin, precision, ascii);
-  write_cells(out, t.triangles, {}, ascii);
+  VtuCellArrays cells;
+  cells.add(t.triangles, kTriangle);
+  write_cells(out, cells, ascii);
   out << "      <CellData Scalars=\"surface\">\n";
   write_ints(out, "surface", t.part, ascii);
   std::vector<double> quality;
@@ -682,31 +807,107 @@ void write_model_vtu(const StructuralModel& model, std::ostream& out, int precis
   write_footer(out);
 }
 
+// The names of a volume mesh as FieldData (see vtk_format.h).
+std::vector<FieldName> field_names(const VolumeMesh& mesh) {
+  std::vector<FieldName> names;
+  auto add = [&](const std::vector<std::string>& list, const char* category, int dim) {
+    for (size_t i = 0; i < list.size(); ++i)
+      names.push_back({std::string(category) + ":" + list[i], static_cast<int>(i), dim});
+  };
+  for (size_t i = 0; i < mesh.surface_names.size(); ++i)
+    names.push_back(
+        {kind_prefixed_name(mesh.surface_kind(static_cast<int>(i)), mesh.surface_names[i]),
+         static_cast<int>(i), 2});
+  add(mesh.part_names, "part", 2);
+  add(mesh.region_names, "region", 3);
+  add(mesh.contact_names, "contact", 1);
+  add(mesh.corner_names, "corner", 0);
+  return names;
+}
+
+// Value `k` of a per-element id list, `fallback` past its end.
+int id_at(const std::vector<int>& ids, size_t k, int fallback) {
+  return k < ids.size() ? ids[k] : fallback;
+}
+
 void write_volume_vtu(const VolumeMesh& mesh, std::ostream& out, int precision, bool ascii) {
   const std::vector<Vec3>& v = mesh.vertices;
-  write_header(out, v.size(), mesh.triangles.size() + mesh.tets.size(), ascii);
+  VtuCellArrays cells;
+  cells.add(mesh.triangles, kTriangle);
+  cells.add(mesh.tets, kTetra);
+  cells.add(mesh.edges, kLine);
+  std::vector<std::array<int, 1>> corners;
+  for (int c : mesh.corners) corners.push_back({c});
+  cells.add(corners, kVertex);
+  write_header(out, v.size(), cells.types.size(), ascii, field_names(mesh));
   write_points(out, v, mesh.frame.origin, precision, ascii);
-  write_cells(out, mesh.triangles, mesh.tets, ascii);
-  std::vector<int> surface, region;
-  std::vector<double> quality;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    surface.push_back(f < mesh.triangle_surface.size() ? mesh.triangle_surface[f] : 0);
-    region.push_back(-1);
+  write_cells(out, cells, ascii);
+  // Per cell, in the order triangles, tets, edges, corners; -1 where an id does not apply.
+  const size_t nf = mesh.triangles.size(), nt = mesh.tets.size(), ne = mesh.edges.size();
+  const size_t nc = corners.size(), n = nf + nt + ne + nc;
+  std::vector<int> surface(n, -1), region(n, -1), part, contact, corner;
+  std::vector<double> quality(n, 0.0);  // 0 on edges and corners
+  for (size_t f = 0; f < nf; ++f) {
+    surface[f] = id_at(mesh.triangle_surface, f, 0);
     const Triangle& t = mesh.triangles[f];
-    quality.push_back(measure_triangle(v[t[0]], v[t[1]], v[t[2]]).q);
+    quality[f] = measure_triangle(v[t[0]], v[t[1]], v[t[2]]).q;
   }
-  for (size_t k = 0; k < mesh.tets.size(); ++k) {
-    surface.push_back(-1);
-    region.push_back(k < mesh.tet_region.size() ? mesh.tet_region[k] : 0);
+  for (size_t k = 0; k < nt; ++k) {
+    region[nf + k] = id_at(mesh.tet_region, k, 0);
     const Tetrahedron& t = mesh.tets[k];
-    quality.push_back(tet_quality(v[t[0]], v[t[1]], v[t[2]], v[t[3]]));
+    quality[nf + k] = tet_quality(v[t[0]], v[t[1]], v[t[2]], v[t[3]]);
+  }
+  if (!mesh.triangle_part.empty()) {
+    part.assign(n, -1);
+    for (size_t f = 0; f < nf; ++f) part[f] = id_at(mesh.triangle_part, f, 0);
+  }
+  if (ne > 0) {
+    contact.assign(n, -1);
+    for (size_t e = 0; e < ne; ++e) contact[nf + nt + e] = id_at(mesh.edge_contact, e, 0);
+  }
+  if (nc > 0) {
+    corner.assign(n, -1);
+    for (size_t c = 0; c < nc; ++c) corner[nf + nt + ne + c] = id_at(mesh.corner_id, c, 0);
   }
   out << "      <CellData Scalars=\"region\">\n";
   write_ints(out, "surface", surface, ascii);
   write_ints(out, "region", region, ascii);
+  if (!part.empty()) write_ints(out, "part", part, ascii);
+  if (!contact.empty()) write_ints(out, "contact", contact, ascii);
+  if (!corner.empty()) write_ints(out, "corner", corner, ascii);
   write_reals(out, "quality", quality, ascii);
   out << "      </CellData>\n";
   write_footer(out);
+}
+
+// Names and kinds from the FieldData names (they win over the "<what>_<id>" defaults).
+void apply_field_names(const VtuData& d, const std::string& file, VolumeMesh& mesh) {
+  auto set = [&](std::vector<std::string>& names, const VtuData::Name& n, const char* prefix) {
+    if (n.id < 0 || n.id > kMaxId)
+      throw InputError(file, n.line,
+                       "field data name id " + std::to_string(n.id) + " out of range");
+    while (static_cast<long long>(names.size()) <= n.id)
+      names.push_back(prefix + std::to_string(names.size()));
+    names[n.id] = n.name;
+  };
+  for (const VtuData::Name& n : d.names) {
+    if (n.category == "part") {
+      set(mesh.part_names, n, "part_");
+    } else if (n.category == "region") {
+      set(mesh.region_names, n, "region_");
+    } else if (n.category == "contact") {
+      set(mesh.contact_names, n, "contact_");
+    } else if (n.category == "corner") {
+      set(mesh.corner_names, n, "corner_");
+    } else {
+      SurfaceKind kind;
+      std::string name;
+      split_kind_prefixed_name(n.category + ":" + n.name, kind, name);
+      set(mesh.surface_names, n, "surface_");
+      mesh.surface_kinds.resize(mesh.surface_names.size(), SurfaceKind::Unknown);
+      mesh.surface_kinds[n.id] = kind;
+    }
+  }
 }
 
 }  // namespace
@@ -733,9 +934,19 @@ VolumeMesh read_vtu_volume(const TextSource& source) {
   mesh.triangles = std::move(c.triangles);
   mesh.triangle_surface = checked_ids(c.triangle_surface, source.name(), d.surface_line, "surface",
                                       &mesh.surface_names);
+  if (!c.triangle_part.empty())
+    mesh.triangle_part =
+        checked_ids(c.triangle_part, source.name(), d.part_line, "part", &mesh.part_names);
   mesh.tets = std::move(c.tets);
   mesh.tet_region =
       checked_ids(c.tet_region, source.name(), d.region_line, "region", &mesh.region_names);
+  mesh.edges = std::move(c.edges);
+  mesh.edge_contact =
+      checked_ids(c.edge_contact, source.name(), d.contact_line, "contact", &mesh.contact_names);
+  mesh.corners.assign(c.corners.begin(), c.corners.end());
+  mesh.corner_id =
+      checked_ids(c.corner_id, source.name(), d.corner_line, "corner", &mesh.corner_names);
+  apply_field_names(d, source.name(), mesh);
   validate_volume_mesh(mesh, source.name());
   return mesh;
 }

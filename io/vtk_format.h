@@ -2,15 +2,21 @@
 //
 // Written: points (file coordinates), triangles (type 5) and tetrahedra (type 10), cell data
 // "surface" (surface id, -1 on tets), "region" (region id, -1 on triangles; volume meshes
-// only) and "quality" (triangle Q = 6S/(sqrt(3) h_max p); tet 6 sqrt(2) V / l_rms^3).
+// only) and "quality" (triangle Q = 6S/(sqrt(3) h_max p); tet 6 sqrt(2) V / l_rms^3). Volume
+// meshes add contact edges as lines (type 3) and corners as vertices (type 1) with cell data
+// "contact" and "corner" (-1 on other cells; quality 0), triangle pieces as "part", and names as
+// FieldData of the UnstructuredGrid: one Int32 array [id, dim] per name, named
+// "<category>:<name>", category a surface kind word (tag_names.h), part, region, contact or
+// corner (meshio's field_data convention).
 // write_vtu*() write every DataArray inline as format="binary" compressed with
 // vtkZLibDataCompressor and header_type UInt64 (coordinates exact in Float64, quality in
 // Float32); write_vtu*_ascii() write format="ascii" text.
 // Read: one Piece with DataArrays in any encoding VTK writes: ascii, binary (inline base64),
 // appended (raw or base64 <AppendedData>), with a UInt32 or UInt64 header, uncompressed or
 // vtkZLibDataCompressor; types Int8..UInt64, Float32, Float64; LittleEndian only. Triangles,
-// quads (split), polygons (fan) and tets; vertex and line cells are ignored, other cells are
-// refused.
+// quads (split), polygons (fan) and tets; in volume meshes lines and vertices (as contact edges
+// and corners; ignored in models); poly-lines and poly-vertices ignored, other cells refused.
+// FieldData names of the form above name the ids; other FieldData is skipped.
 #pragma once
 
 #include <ostream>

@@ -411,18 +411,51 @@ PYBIND11_MODULE(voroseal, m) {
       });
 
   // ---- VolumeMesh ----
-  py::class_<VolumeMesh, std::shared_ptr<VolumeMesh>>(m, "VolumeMesh",
-                                                      "A tetrahedral mesh with region ids (what tetmesh makes)")
-      .def_property_readonly("vertices", [](const VolumeMesh& v) { return points_array(v.vertices, v.frame.origin); },
-                             "(n, 3) float64, file coordinates")
-      .def_property_readonly("tets", [](const VolumeMesh& v) { return index_array<4>(v.tets); }, "(k, 4) int64")
-      .def_property_readonly("tet_regions", [](const VolumeMesh& v) { return int_array(v.tet_region); },
-                             "(k,) region id of each tet (index into region_names)")
-      .def_property_readonly("triangles", [](const VolumeMesh& v) { return index_array<3>(v.triangles); },
-                             "(t, 3) boundary and interface triangles")
-      .def_property_readonly("triangle_surfaces", [](const VolumeMesh& v) { return int_array(v.triangle_surface); })
+  py::class_<VolumeMesh, std::shared_ptr<VolumeMesh>>(
+      m, "VolumeMesh", "A tetrahedral mesh with region ids (what tetmesh makes)")
+      .def_property_readonly(
+          "vertices", [](const VolumeMesh& v) { return points_array(v.vertices, v.frame.origin); },
+          "(n, 3) float64, file coordinates")
+      .def_property_readonly(
+          "tets", [](const VolumeMesh& v) { return index_array<4>(v.tets); }, "(k, 4) int64")
+      .def_property_readonly(
+          "tet_regions", [](const VolumeMesh& v) { return int_array(v.tet_region); },
+          "(k,) region id of each tet (index into region_names)")
+      .def_property_readonly(
+          "triangles", [](const VolumeMesh& v) { return index_array<3>(v.triangles); },
+          "(t, 3) boundary and interface triangles")
+      .def_property_readonly(
+          "triangle_surfaces", [](const VolumeMesh& v) { return int_array(v.triangle_surface); },
+          "(t,) input surface of each triangle (index into surface_names)")
+      .def_property_readonly(
+          "triangle_parts", [](const VolumeMesh& v) { return int_array(v.triangle_part); },
+          "(t,) piece of its surface of each triangle (index into part_names); empty when unknown")
       .def_readonly("region_names", &VolumeMesh::region_names)
       .def_readonly("surface_names", &VolumeMesh::surface_names)
+      .def_property_readonly(
+          "surface_kinds",
+          [](const VolumeMesh& v) {
+            std::vector<std::string> kinds;
+            for (size_t s = 0; s < v.surface_names.size(); ++s)
+              kinds.push_back(to_string(v.surface_kind(static_cast<int>(s))));
+            return kinds;
+          },
+          "kind of each surface: horizon, fault, boundary, unconformity or unknown")
+      .def_readonly("part_names", &VolumeMesh::part_names)
+      .def_property_readonly(
+          "edges", [](const VolumeMesh& v) { return index_array<2>(v.edges); },
+          "(e, 2) contact-line segments")
+      .def_property_readonly(
+          "edge_contacts", [](const VolumeMesh& v) { return int_array(v.edge_contact); },
+          "(e,) contact id of each edge (index into contact_names)")
+      .def_readonly("contact_names", &VolumeMesh::contact_names)
+      .def_property_readonly(
+          "corners", [](const VolumeMesh& v) { return int_array(v.corners); },
+          "(c,) vertex of each corner")
+      .def_property_readonly(
+          "corner_ids", [](const VolumeMesh& v) { return int_array(v.corner_id); },
+          "(c,) corner id of each corner (index into corner_names)")
+      .def_readonly("corner_names", &VolumeMesh::corner_names)
       .def(
           "write",
           [](const VolumeMesh& v, const py::object& path) {

@@ -1,8 +1,9 @@
 // `voroseal convert IN OUT`: rewrites a model or a volume mesh in another format. A model keeps
 // the structure the target format can hold (.ml keeps regions and layers; other formats keep
 // surface parts as groups). A volume mesh (an input holding tets, TetGen files included) keeps
-// its tets with their region ids and its triangles with their surface ids; a target that cannot
-// hold tets is refused rather than written without them.
+// its tets with their region ids, its triangles with their surface ids, its contact edges and
+// corner points; a target that cannot hold tets, edges or points is refused rather than written
+// without them.
 #include <algorithm>
 #include <filesystem>
 
@@ -55,12 +56,19 @@ class ConvertModule : public Module {
                              " tets; " + out + ": the " + ext +
                              " format holds surfaces only, the tets would be lost (write " +
                              "a volume format: .mesh .vtu .msh .node .ele)");
+      // TetGen's .node/.ele/.face hold no edges or points: they would be lost.
+      if ((ext == ".node" || ext == ".ele") && (!mesh.edges.empty() || !mesh.corners.empty()))
+        throw ParameterError(context.input_path + " holds " + std::to_string(mesh.edges.size()) +
+                             " contact edges and " + std::to_string(mesh.corners.size()) +
+                             " corner points; " + out +
+                             ": TetGen files hold neither, they would be lost (write .mesh "
+                             ".vtu or .msh)");
       write_volume_mesh(mesh, out, write);
-      context.report["convert"] = {{"input", context.input_path},
-                                   {"output", out},
-                                   {"tets", mesh.tets.size()},
-                                   {"triangles", mesh.triangles.size()},
-                                   {"vertices", mesh.vertices.size()}};
+      context.report["convert"] = {
+          {"input", context.input_path},     {"output", out},
+          {"tets", mesh.tets.size()},        {"triangles", mesh.triangles.size()},
+          {"edges", mesh.edges.size()},      {"corners", mesh.corners.size()},
+          {"vertices", mesh.vertices.size()}};
     } else {
       if (!context.model) throw ModelError("convert needs a model or a volume mesh");
       if (!contains(writable_model_extensions(), ext))

@@ -2,7 +2,8 @@
 //
 // Id conventions (kept through to the VolumeMesh):
 //  - facet marker = surface part index + 1 (TetGen reserves 0 for "no marker");
-//    VolumeMesh::triangle_surface = marker − 1 = part index, surface_names = part names;
+//    VolumeMesh::triangle_surface = marker − 1 = part index, surface_names = part names,
+//    until tag_by_surface() (surface_tags.h) moves them to triangle_part / part_names;
 //  - region attribute = region index + 1 (TetGen gives 0 to tets outside every region point);
 //    VolumeMesh::tet_region = attribute − 1 = region index, region_names = region names.
 #pragma once

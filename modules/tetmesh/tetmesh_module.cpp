@@ -263,7 +263,8 @@ class TetmeshModule : public Module {
     if (run.slivers.flattest_layer_tet >= 0 && run.slivers.layer.min_dihedral_deg < options.min_dihedral_deg &&
         run.slivers.layer.min_dihedral_deg <= quality.min_dihedral_deg + 1e-9) {
       auto name = [&](int s) {
-        return s >= 0 && s < static_cast<int>(mesh->surface_names.size()) ? mesh->surface_names[s] : std::to_string(s);
+        return s >= 0 && s < static_cast<int>(mesh->part_names.size()) ? mesh->part_names[s]
+                                                                       : std::to_string(s);
       };
       const std::string where = file_point(tet_centre(run.slivers.flattest_layer_tet), mesh->frame.origin);
       context.log.warning(

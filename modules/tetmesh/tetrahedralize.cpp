@@ -19,6 +19,7 @@
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
 #include "framework/model/surface_bisection.h"
+#include "modules/tetmesh/surface_tags.h"
 #include "modules/tetmesh/tet_surface_edges.h"
 #include "modules/tetmesh/tetgen_plc.h"
 #include "modules/tetmesh/tetgen_run.h"
@@ -561,13 +562,16 @@ SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
   // the surfaces it lies on (sorted).
   std::vector<char> kind(mesh.vertices.size(), 0);
   std::vector<std::vector<int>> surfaces_of(mesh.vertices.size());
+  // Parts: a layer lies between two parts, which may be pieces of one surface.
+  const std::vector<int>& part =
+      mesh.triangle_part.empty() ? mesh.triangle_surface : mesh.triangle_part;
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
     const Triangle& t = mesh.triangles[i];
     const char k = min_angle_deg(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) < bound_deg ? 2 : 1;
     for (int v : t) {
       kind[v] = std::max(kind[v], k);
       std::vector<int>& list = surfaces_of[v];
-      const int surface = i < mesh.triangle_surface.size() ? mesh.triangle_surface[i] : -1;
+      const int surface = i < part.size() ? part[i] : -1;
       const auto at = std::lower_bound(list.begin(), list.end(), surface);
       if (at == list.end() || *at != surface) list.insert(at, surface);
     }
@@ -995,6 +999,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
             " vertices (" + std::to_string(info.steiner_points) + " Steiner points, " + std::to_string(info.sliver_points) +
             " of them against slivers), " + std::to_string(mesh.triangles.size()) + " surface triangles, TetGen " +
             number(info.tetgen_seconds) + " s");
+  // Last: the passes above work on part ids (a layer lies between two parts).
+  tag_by_surface(info.refined_model ? *info.refined_model : model, mesh);
   return std::move(best.mesh);
 }
 

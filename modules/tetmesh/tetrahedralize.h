@@ -109,15 +109,15 @@ struct SliverCensus {
   Group surface;
   /// All four vertices inside regions.
   Group interior;
-  /// The flattest layer tet (-1: none) and a surface (VolumeMesh::triangle_surface id) on each
-  /// side of its layer.
+  /// The flattest layer tet (-1: none) and a surface part (the part id sliver_census() used) on
+  /// each side of its layer.
   long flattest_layer_tet = -1;
   std::array<int, 2> layer_surfaces{-1, -1};
   long total() const { return wedge.tets + layer.tets + needle.tets + surface.tets + interior.tets; }
 };
 
 /// Counts the tets of `mesh` below `bound_deg` by group (see SliverCensus); mesh.triangles are
-/// the surfaces.
+/// the surfaces, their parts triangle_part (triangle_surface when it is empty).
 SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg);
 
 /// What a run did, beyond the mesh.
@@ -150,9 +150,11 @@ struct TetmeshRun {
 ///
 /// Output, in the model's local frame with its frame copied: vertices (the PLC's, in order of
 /// first use by the model's triangles, then TetGen's Steiner points), positively oriented tets
-/// with tet_region = region index, and TetGen's boundary and interface triangles with
-/// triangle_surface = surface part index, oriented like the model triangle they match;
-/// region_names / surface_names are the model's region / part names (see tetgen_plc.h).
+/// with tet_region = region index, and TetGen's boundary and interface triangles, oriented like
+/// the model triangle they match, with triangle_surface = the index of the part's interface
+/// (one id per input surface, named and of the kind of the interface) and triangle_part = the
+/// part index; region_names are the model's region names; edges and corners are the model's
+/// contact segments and corners (see tag_by_surface() in surface_tags.h).
 /// Faults ending inside a region stay as internal triangles of the mesh.
 ///
 /// TetGen runs in a child process (see run_tetgen()): a TetGen crash is a MesherError, not the

@@ -1,5 +1,6 @@
 // `voroseal convert` on volume meshes: every format it writes tets to keeps the tets, their
-// region ids and the surface triangles; a format that holds surfaces only is refused.
+// region ids and the surface triangles (and, but for TetGen files, which are then refused, the
+// contact edges, corner points and names); a format that holds surfaces only is refused.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -37,12 +38,13 @@ class CliConvert : public ::testing::Test {
   VolumeMesh mesh_;
 };
 
-TEST_F(CliConvert, KeepsTetsRegionsAndSurfacesThroughEveryVolumeFormat) {
+TEST_F(CliConvert, KeepsTetsRegionsSurfacesContactsAndCornersThroughEveryVolumeFormat) {
   ASSERT_GT(mesh_.tets.size(), 0u);
   ASSERT_GT(tets_per_region(mesh_).size(), 1u);
-  // Each hop reads the previous file: .mesh -> .vtu -> .msh -> .node -> .mesh.
-  const std::vector<std::string> chain = {source_, dir_ / "a.vtu", dir_ / "b.msh", dir_ / "c.node",
-                                          dir_ / "d.mesh"};
+  ASSERT_GT(mesh_.edges.size(), 0u);
+  ASSERT_GT(mesh_.corners.size(), 0u);
+  // Each hop reads the previous file: .mesh -> .vtu -> .msh -> .mesh.
+  const std::vector<std::string> chain = {source_, dir_ / "a.vtu", dir_ / "b.msh", dir_ / "d.mesh"};
   for (size_t i = 1; i < chain.size(); ++i) {
     const CliResult r = run_voroseal({"convert", chain[i - 1], chain[i]});
     ASSERT_EQ(r.exit_code, 0) << chain[i - 1] << " -> " << chain[i] << ": " << r.err;
@@ -51,7 +53,34 @@ TEST_F(CliConvert, KeepsTetsRegionsAndSurfacesThroughEveryVolumeFormat) {
     EXPECT_EQ(back.vertices.size(), mesh_.vertices.size()) << chain[i];
     EXPECT_EQ(tets_per_region(back), tets_per_region(mesh_)) << chain[i];
     EXPECT_EQ(triangles_per_surface(back), triangles_per_surface(mesh_)) << chain[i];
+    EXPECT_EQ(back.surface_names, mesh_.surface_names) << chain[i];
+    EXPECT_EQ(back.surface_kinds, mesh_.surface_kinds) << chain[i];
+    EXPECT_EQ(back.region_names, mesh_.region_names) << chain[i];
+    EXPECT_EQ(back.contact_names, mesh_.contact_names) << chain[i];
+    EXPECT_EQ(back.corner_names, mesh_.corner_names) << chain[i];
+    EXPECT_EQ(back.edges.size(), mesh_.edges.size()) << chain[i];
+    EXPECT_EQ(back.corners.size(), mesh_.corners.size()) << chain[i];
   }
+}
+
+TEST_F(CliConvert, TetGenFilesKeepTetsButRefuseContactsAndCorners) {
+  const CliResult refused = run_voroseal({"convert", source_, dir_ / "c.node"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("TetGen files hold neither"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "c.node"));
+  // Without edges and corners the tets, regions and surfaces go through.
+  VolumeMesh bare = mesh_;
+  bare.edges.clear();
+  bare.edge_contact.clear();
+  bare.corners.clear();
+  bare.corner_id.clear();
+  write_volume_mesh(bare, dir_ / "bare.msh");
+  const CliResult r = run_voroseal({"convert", dir_ / "bare.msh", dir_ / "c.node"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const VolumeMesh back = read_volume_mesh(dir_ / "c.node");
+  EXPECT_EQ(back.tets.size(), mesh_.tets.size());
+  EXPECT_EQ(tets_per_region(back), tets_per_region(mesh_));
+  EXPECT_EQ(triangles_per_surface(back), triangles_per_surface(mesh_));
 }
 
 TEST_F(CliConvert, RefusesAFormatThatCannotHoldTets) {

@@ -265,7 +265,11 @@ TEST(MalformedInput, Medit) {
       {"truncated entry", head(kMedit, 9) + "1 2                  \n", 10, "file ends inside Triangles"},
       {"second Vertices", insert(kMedit, 8, "Vertices\n0"), 8, "a second Vertices section"},
       {"text after End", kMedit + "junk\n", 12, "unexpected text after End"},
-      {"bad value in a skipped section", insert(kMedit, 11, "Edges\n1\n1 2 x"), 13, "finite number in Edges"},
+      {"bad value in a skipped section", insert(kMedit, 11, "Ridges\n1\nx"), 13,
+       "finite number in Ridges"},
+      {"bad edge ref", insert(kMedit, 11, "Edges\n1\n1 2 x"), 13, "integer reference in Edges"},
+      {"bad edge vertex", insert(kMedit, 11, "Edges\n1\n1 9 1"), 13, "vertex index 9 in Edges"},
+      {"bad corner", insert(kMedit, 11, "Corners\n1\n0"), 13, "vertex index 0 in Corners"},
       {"bad tetrahedron", insert(kMedit, 11, "Tetrahedra\n1\n1 2 3 9 1"), 13, "vertex index 9 in Tetrahedra"},
       {"no triangles", erase(erase(erase(kMedit, 10), 9), 8), 0, "no triangles"},
   };

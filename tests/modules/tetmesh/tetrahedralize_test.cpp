@@ -36,7 +36,9 @@ void expect_valid_mesh(const StructuralModel& model, const VolumeMesh& mesh, dou
   const VolumeQuality q = measure_volume(mesh);
   EXPECT_EQ(q.regions, static_cast<int>(model.regions.size()));
   EXPECT_EQ(mesh.region_names.size(), model.regions.size());
-  EXPECT_EQ(mesh.surface_names.size(), model.parts.size());
+  EXPECT_EQ(mesh.part_names.size(), model.parts.size());
+  EXPECT_EQ(mesh.surface_names.size(), model.interfaces.size());
+  EXPECT_EQ(mesh.surface_kinds.size(), model.interfaces.size());
   EXPECT_EQ(q.nonpositive_tets, 0);
   EXPECT_GT(q.min_volume, 0.0);
   EXPECT_EQ(model_triangles_not_in_tets(model, mesh).size(), 0u);
@@ -47,10 +49,26 @@ void expect_valid_mesh(const StructuralModel& model, const VolumeMesh& mesh, dou
     const double enclosed = -model.signed_volume(model.regions[r].sides);
     EXPECT_NEAR(q.region_volume[r], enclosed, volume_tolerance * enclosed) << "region " << model.regions[r].name;
   }
-  for (int s : mesh.triangle_surface) {
-    EXPECT_GE(s, 0);
-    EXPECT_LT(s, static_cast<int>(model.parts.size()));
+  // One surface id per interface: every piece of a surface carries its interface's id.
+  ASSERT_EQ(mesh.triangle_part.size(), mesh.triangles.size());
+  ASSERT_EQ(mesh.triangle_surface.size(), mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const int p = mesh.triangle_part[t];
+    ASSERT_GE(p, 0);
+    ASSERT_LT(p, static_cast<int>(model.parts.size()));
+    EXPECT_EQ(mesh.triangle_surface[t], model.parts[p].interface);
   }
+  // Contacts and corners: every contact segment an edge (a surface-triangle edge), every corner
+  // a point.
+  size_t segments = 0;
+  for (const Contact& c : model.contacts) segments += c.vertices.size() - 1;
+  EXPECT_EQ(mesh.edges.size(), segments);
+  EXPECT_EQ(mesh.edge_contact.size(), mesh.edges.size());
+  EXPECT_EQ(mesh.corners.size(), model.corners.size());
+  std::set<std::pair<int, int>> triangle_edges;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) triangle_edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  for (const Edge& e : mesh.edges) EXPECT_TRUE(triangle_edges.count(std::minmax(e[0], e[1])));
 }
 
 TEST(TetgenSwitches, AreTheDocumentedString) {
@@ -93,10 +111,10 @@ TEST(Tetrahedralize, BoxCutByHorizonGivesTwoConformalRegions) {
   EXPECT_EQ(mesh.frame.origin, model.frame.origin);
   const int horizon = part_named(model, "horizon");
   ASSERT_GE(horizon, 0);
-  EXPECT_EQ(mesh.surface_names[horizon], model.parts[horizon].name);
+  EXPECT_EQ(mesh.part_names[horizon], model.parts[horizon].name);
   int horizon_triangles = 0;
   for (size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (mesh.triangle_surface[t] == horizon) {
+    if (mesh.triangle_part[t] == horizon) {
       ++horizon_triangles;
       for (int v : mesh.triangles[t]) EXPECT_NEAR(mesh.vertices[v].z(), model.vertices[model.parts[horizon].model_vertex[0]].z(), 0);
     }
@@ -134,7 +152,7 @@ TEST(Tetrahedralize, SurfaceTrianglesKeepTheModelOrientation) {
     const auto it = model_triangle.find(key);
     ASSERT_NE(it, model_triangle.end());
     EXPECT_EQ(canonical(mesh.triangles[t]), canonical(it->second.first));
-    EXPECT_EQ(mesh.triangle_surface[t], it->second.second);
+    EXPECT_EQ(mesh.triangle_part[t], it->second.second);
   }
 }
 
@@ -150,7 +168,7 @@ TEST(Tetrahedralize, FloatingFaultStaysAsInternalFacets) {
   expect_valid_mesh(model, mesh);
   EXPECT_NEAR(measure_volume(mesh).region_volume[0], 1.0, 1e-6);
   int fault_triangles = 0;
-  for (int s : mesh.triangle_surface) fault_triangles += s == fault;
+  for (int s : mesh.triangle_part) fault_triangles += s == fault;
   EXPECT_EQ(fault_triangles, 18);
   // Tets on both sides of the fault: its triangles are interior faces shared by two tets.
   std::set<std::array<int, 3>> faces_seen_once, faces_seen_twice;
@@ -164,7 +182,7 @@ TEST(Tetrahedralize, FloatingFaultStaysAsInternalFacets) {
       if (!faces_seen_once.insert(f).second) faces_seen_twice.insert(f);
     }
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (mesh.triangle_surface[t] != fault) continue;
+    if (mesh.triangle_part[t] != fault) continue;
     std::array<int, 3> f = mesh.triangles[t];
     std::sort(f.begin(), f.end());
     EXPECT_TRUE(faces_seen_twice.count(f)) << "fault triangle " << t << " is not between two tets";
@@ -192,7 +210,7 @@ TEST(Tetrahedralize, MaxVolumeBoundsEveryTetWhenTheSurfaceMayBeSplit) {
   EXPECT_EQ(q.regions, 2);
   EXPECT_EQ(q.nonconforming_triangles, 0);
   for (double v : q.region_volume) EXPECT_NEAR(v, 0.5, 0.5e-6);
-  for (int s : mesh.triangle_surface) EXPECT_LT(s, static_cast<int>(model.parts.size()));
+  for (int s : mesh.triangle_part) EXPECT_LT(s, static_cast<int>(model.parts.size()));
 }
 
 double largest_tet(const VolumeMesh& mesh) {
