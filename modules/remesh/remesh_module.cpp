@@ -34,6 +34,9 @@ namespace {
 // upper figures, for refusing runs that cannot fit before they start.
 constexpr double kBytesPerSeed = 4096.0;
 constexpr double kBytesPerInputTriangle = 2048.0;
+// Input triangles bisected for sizes finer than them: at most this many per seed (a cell then
+// spans a few of them, enough for its density; more only costs time and memory).
+constexpr double kInputTrianglesPerSizedSeed = 8.0;
 // Defects named in the error when the remeshed model is invalid.
 constexpr int kDefectsNamed = 5;
 // Rounds of refinement of an invalid remesh, by default. A round's defects do not fall
@@ -324,19 +327,31 @@ class RemeshModule final : public Module {
     if (options.sized()) {
       // Sizes finer than the input's triangles need finer triangles to be followed.
       const double h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));
+      // The sizes change the seed count: the estimate counts the seeds they need, first on the
+      // input's triangles (before any work), then on the triangles bisected for the sizes.
+      auto sized_seeds = [&](const StructuralModel& model) {
+        return seed_count *
+               surface_sizing(model, options.sizes, h, options.gradation, options.size_field.get())
+                   .seed_factor;
+      };
+      const double estimate = sized_seeds(*context.model);
+      require_memory(
+          context,
+          estimate * kBytesPerSeed + context.model->num_triangles() * kBytesPerInputTriangle,
+          "remesh " + asked + " with sizes (" + std::to_string(std::lround(estimate)) + " seeds)");
+      // Input triangles finer than the cells help no one: a few per seed at most.
       auto refined = std::make_shared<StructuralModel>(*context.model);
+      const long budget = context.model->num_triangles() +
+                          static_cast<long>(kInputTrianglesPerSizedSeed * estimate);
       if (const int split = refine_for_sizes(*refined, options.sizes, h, options.gradation,
-                                             options.size_field.get());
+                                             options.size_field.get(), budget);
           split > 0) {
         context.log.info(
             "remesh: sizes finer than the input's triangles: " + std::to_string(split) +
             " input edges bisected (" + std::to_string(refined->num_triangles()) + " triangles)");
         context.model = std::move(refined);
       }
-      // The sizes change the seed count: the estimate counts the seeds they need.
-      seed_count *= surface_sizing(*context.model, options.sizes, h, options.gradation,
-                                   options.size_field.get())
-                        .seed_factor;
+      seed_count = sized_seeds(*context.model);
       asked += " with sizes (" + std::to_string(std::lround(seed_count)) + " seeds)";
     }
     require_memory(

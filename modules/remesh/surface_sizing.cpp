@@ -238,7 +238,7 @@ SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<Siz
 }
 
 int refine_for_sizes(StructuralModel& model, const std::vector<SizeRule>& rules, double h,
-                     double gradation, const SizeField* field) {
+                     double gradation, const SizeField* field, long max_triangles) {
   constexpr int kMaxRounds = 8;  // each round halves the edges it splits
   int split = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
@@ -252,7 +252,9 @@ int refine_for_sizes(StructuralModel& model, const std::vector<SizeRule>& rules,
         // Both orientations of an inner edge come; the second finds it split and skips it.
         if (s < h && (model.vertices[a] - model.vertices[b]).norm() > s) edges.push_back({a, b});
       }
-    if (edges.empty()) break;
+    // Inner edges come twice and a split adds two triangles: about edges.size() more.
+    if (edges.empty() || flat.triangles.size() + edges.size() > static_cast<size_t>(max_triangles))
+      break;
     split += bisect_edges(model, edges);
   }
   return split;

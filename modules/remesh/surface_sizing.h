@@ -53,9 +53,10 @@ SurfaceSizing surface_sizing(const StructuralModel& model, const std::vector<Siz
 /// at their ends, `rules` and `field` graded as surface_sizing() grades them, for at most
 /// kMaxRounds rounds: the CVT density is linear on the input's triangles, so sizes finer than
 /// those triangles (a well through the middle of a large one) need finer triangles. The
-/// surfaces do not move. Returns the number of edges split.
+/// surfaces do not move. No round starts that would take the model past `max_triangles`.
+/// Returns the number of edges split.
 int refine_for_sizes(StructuralModel& model, const std::vector<SizeRule>& rules, double h,
-                     double gradation, const SizeField* field);
+                     double gradation, const SizeField* field, long max_triangles);
 
 /// Mean edge length of each interface's triangles (an edge shared by two of its parts counted
 /// once; 0 for an interface without triangles): the size a remesh realised.

@@ -154,7 +154,10 @@ TEST(SizeField, InputTrianglesLargerThanTheSizesAreBisected) {
   const Vec3 well = Vec3(0.3, 0.4, 0.5) - model.frame.origin;
   const SizeField field({well}, {0.02});
   const double h = 0.25, gradation = 1.3;
-  const int split = refine_for_sizes(model, {}, h, gradation, &field);
+  // No round past the budget: with the model's own count, nothing is split.
+  StructuralModel capped = model;
+  EXPECT_EQ(refine_for_sizes(capped, {}, h, gradation, &field, capped.num_triangles()), 0);
+  const int split = refine_for_sizes(model, {}, h, gradation, &field, 1000000);
   EXPECT_GT(split, 0);
   EXPECT_GT(model.num_triangles(), triangles);
   EXPECT_NEAR(model.area(), area, 1e-12 * area);
@@ -171,7 +174,7 @@ TEST(SizeField, InputTrianglesLargerThanTheSizesAreBisected) {
   EXPECT_LT(nearest, 0.05);  // a vertex came near the point, where the size is asked
   // Away from the point (sizes of h) nothing was split: the model stays as coarse as it was.
   StructuralModel coarse = build_model(test::lattice_box(4, true));
-  EXPECT_EQ(refine_for_sizes(coarse, {}, h, gradation, nullptr), 0);
+  EXPECT_EQ(refine_for_sizes(coarse, {}, h, gradation, nullptr, 1000000), 0);
 }
 
 }  // namespace
