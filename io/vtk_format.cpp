@@ -9,6 +9,7 @@
 #include <list>
 
 #include "framework/core/error.h"
+#include "framework/core/markup_text.h"
 #include "io/format_common.h"
 #include "io/tag_names.h"
 #include "io/vtk_binary.h"
@@ -30,33 +31,7 @@ bool is_name_array(const std::string& key) {
   return false;
 }
 
-// XML character entities of attribute values.
-std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (char ch : text) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
+// The character entities escape_markup() writes (the XML ones), back to characters.
 std::string xml_unescaped(const std::string& text) {
   static const std::pair<const char*, char> entities[] = {
       {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
@@ -685,7 +660,7 @@ void write_header(std::ostream& out, size_t points, size_t cells, bool ascii,
   if (!names.empty()) {
     out << "    <FieldData>\n";
     for (const FieldName& n : names) {
-      const std::string attributes = "type=\"Int32\" Name=\"" + xml_escaped(n.text) +
+      const std::string attributes = "type=\"Int32\" Name=\"" + escape_markup(n.text, "&apos;") +
                                      "\" NumberOfTuples=\"1\" NumberOfComponents=\"2\"";
       if (!ascii) {
         write_binary(out, attributes, std::vector<int32_t>{n.id, n.dim});

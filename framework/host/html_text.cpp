@@ -3,33 +3,12 @@
 #include <cctype>
 #include <cstdio>
 
+#include "framework/core/markup_text.h"
+
 namespace voroseal {
 
 std::string escape_html(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+  return escape_markup(text, "&#39;");
 }
 
 std::string escape_url(const std::string& path) {

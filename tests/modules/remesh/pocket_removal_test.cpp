@@ -48,6 +48,14 @@ struct BoxRemesh {
                               Triangle{v[2], v[0], v[3]}})
       add_triangle(f);
   }
+  // The floating tetrahedron with its last two faces on the top part (`top`, found by the
+  // caller) instead of the horizon: a bubble of two surfaces.
+  void add_two_surface_bubble(int top) {
+    const size_t first = surface.triangles.size();
+    add_floating_tetrahedron();
+    surface.triangle_part[first + 2] = top;
+    surface.triangle_part[first + 3] = top;
+  }
   // Remeshes the surface into a model, removes its pockets thinner than `resolution`, and
   // remeshes again; returns the removals.
   std::vector<PocketRemoval> remove(double resolution, StructuralModel& after,
@@ -134,9 +142,7 @@ TEST(RemovePockets, ABubbleOfTwoSurfacesGoesAway) {
   const int top = box.part_named("zmax");
   ASSERT_GE(top, 0);
   const size_t triangles = box.surface.triangles.size();
-  box.add_floating_tetrahedron();
-  box.surface.triangle_part[triangles + 2] = top;
-  box.surface.triangle_part[triangles + 3] = top;
+  box.add_two_surface_bubble(top);
   StructuralModel after;
   TopologyReport report;
   const std::vector<PocketRemoval> removed = box.remove(1.0, after, report);
@@ -156,10 +162,7 @@ TEST(RemovePockets, APocketThickerThanACellGoesOnlyWhereItsRimIsThinnerThanDMin)
     BoxRemesh box;
     const int top = box.part_named("zmax");
     ASSERT_GE(top, 0);
-    const size_t triangles = box.surface.triangles.size();
-    box.add_floating_tetrahedron();
-    box.surface.triangle_part[triangles + 2] = top;
-    box.surface.triangle_part[triangles + 3] = top;
+    box.add_two_surface_bubble(top);
     StructuralModel after;
     TopologyReport report;
     const std::vector<PocketRemoval> removed = box.remove(1e-3, after, report, d_min);
