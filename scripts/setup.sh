@@ -13,6 +13,8 @@ required=(
 )
 # snakemake: runs studies as workflows (docs/studies.md); its test is skipped without it.
 optional=(libceres-dev snakemake gmsh python3-meshio)  # gmsh, meshio: .msh files for io tests
+# --bench: what bench/ needs besides (matplotlib draws bench/scale.py's plot).
+if [ "${1:-}" = "--bench" ]; then optional+=(python3-matplotlib); fi
 
 missing=()
 for p in "${required[@]}" "${optional[@]}"; do

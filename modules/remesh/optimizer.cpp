@@ -143,6 +143,17 @@ class ScaledProblem {
     progress_.advance();
     if (iteration_ >= options_.max_iterations) throw StopRun{"iterations"};
     if (gnorm <= options_.gradient_threshold * history_.front().gradient_norm) throw StopRun{"gradient"};
+    if (energy_stalled()) throw StopRun{"energy"};
+  }
+
+  // F fell by less than energy_tolerance · (F_0 − F) over the last kEnergyStopWindow
+  // iterations: relative to the decrease so far, so it does not depend on F's scale.
+  bool energy_stalled() const {
+    const int n = static_cast<int>(history_.size());
+    if (options_.energy_tolerance <= 0.0 || n <= kEnergyStopWindow) return false;
+    const double now = history_.back().energy;
+    const double recent = history_[n - 1 - kEnergyStopWindow].energy - now;
+    return recent < options_.energy_tolerance * (history_.front().energy - now);
   }
 
   // Lloyd: plain iterations on seeds.
@@ -164,6 +175,10 @@ class ScaledProblem {
       }
       if (it > 0 && gnorm <= options_.gradient_threshold * history_.front().gradient_norm) {
         run.stop_reason = "gradient";
+        break;
+      }
+      if (energy_stalled()) {
+        run.stop_reason = "energy";
         break;
       }
       const EnergyEvaluation& e = objective_.last();

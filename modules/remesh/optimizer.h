@@ -5,8 +5,10 @@
 //    minimises F_CVT only (α is ignored);
 //  - Ceres GradientProblemSolver (LBFGS direction, Wolfe line search) when voroseal is built
 //    with Ceres.
-// All stop after `max_iterations` iterations or when ‖∇F‖ ≤ gradient_threshold · ‖∇F(start)‖,
-// or earlier when the line search cannot lower F any more (converged to rounding).
+// All stop after `max_iterations` iterations, when ‖∇F‖ ≤ gradient_threshold · ‖∇F(start)‖,
+// when F fell by less than energy_tolerance · (F(start) − F) over the last
+// kEnergyStopWindow iterations (the rest of the run would buy too little), or earlier when the
+// line search cannot lower F any more (converged to rounding).
 // Internally seeds are scaled to unit mean spacing and F to O(1) so tolerances do not depend
 // on the model's units; everything reported is in model units.
 #pragma once
@@ -20,6 +22,10 @@
 
 namespace voroseal {
 
+/// Iterations over which the energy stop measures the decrease of F: long enough that one
+/// short L-BFGS step (a curvature correction) does not end the run.
+constexpr int kEnergyStopWindow = 10;
+
 enum class OptimizerKind { Lbfgs, Lloyd, Ceres };
 
 const char* to_string(OptimizerKind kind);
@@ -32,6 +38,7 @@ struct OptimizerOptions {
   OptimizerKind kind = OptimizerKind::Lbfgs;
   int max_iterations = 100;
   double gradient_threshold = 1e-6;  // relative to the gradient norm at the start
+  double energy_tolerance = 0.0;     // relative to the decrease so far; 0: never stop on F
   int lbfgs_memory = 7;              // corrections kept by L-BFGS
   /// Seeds that stay where they are (their gradient is taken as zero); empty: all move. A
   /// repair round re-optimises the seeds around the places it refined, not the others.
@@ -77,7 +84,7 @@ struct IterationRecord {
 struct OptimizationRun {
   std::vector<IterationRecord> history;
   long evaluations = 0;
-  std::string stop_reason;  // "iterations", "gradient", "line search", "no progress"
+  std::string stop_reason;  // "iterations", "gradient", "energy", "line search", "no progress"
 };
 
 /// Minimises `objective` starting from `seeds` (updated in place with the best point found).

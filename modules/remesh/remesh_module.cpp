@@ -16,6 +16,7 @@
 #include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
 #include "framework/host/parameter_limits.h"
+#include "framework/host/peak_memory.h"
 #include "framework/host/registry.h"
 #include "io/atomic_file.h"
 #include "io/model_io.h"
@@ -210,6 +211,10 @@ class RemeshModule final : public Module {
     p.push_back(spec("gradient-threshold", ParameterType::Double, 1e-6,
                      "stop when |grad F| falls below this fraction of its initial value", 0.0,
                      1.0));
+    p.push_back(spec("energy-tolerance", ParameterType::Double, 0.0,
+                     "stop when F fell by less than this fraction of its decrease so far over "
+                     "the last 10 iterations (0: off)",
+                     0.0, 1.0));
     p.push_back(spec("boundary-weight", ParameterType::Double, nullptr,
                      "weight alpha in [0, 1] of the contact energy (default: from the gradient-norm ratio)", 0.0, 1.0));
     p.push_back(spec("dump-seeds", ParameterType::Path, nullptr, "write the optimised seeds, x y z per line"));
@@ -361,6 +366,7 @@ class RemeshModule final : public Module {
     options.optimizer.max_iterations = static_cast<int>(parameters.get_int("iterations"));
     options.optimizer.kind = optimizer_from_string(parameters.get_string("optimizer"));
     options.optimizer.gradient_threshold = parameters.get_double("gradient-threshold");
+    options.optimizer.energy_tolerance = parameters.get_double("energy-tolerance");
     options.random_seed = static_cast<std::uint64_t>(parameters.get_int("seed"));
     if (parameters.has("boundary-weight")) options.boundary_weight = parameters.get_double("boundary-weight");
     options.threads = context.threads;
@@ -380,7 +386,9 @@ class RemeshModule final : public Module {
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
     remesh_options.refinement.iterations = static_cast<int>(parameters.get_int("refine-iterations"));
     if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
+    PeakMemory memory;
     SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
+    seeds.peak_bytes = memory.bytes();
     // The seeds are written before mesh building, so that they are there whatever happens next.
     if (parameters.has("dump-seeds")) {
       const std::string path = parameters.get_string("dump-seeds");
@@ -488,6 +496,17 @@ class RemeshModule final : public Module {
                          {"evaluation_ms_mean", r.run.evaluations > 0
                                                     ? 1000.0 * r.optimization_seconds / r.run.evaluations
                                                     : 0.0}};
+    // Peak resident memory per phase of the kept remesh (MB), and the whole command's so far.
+    const auto megabytes = [](double bytes) { return std::round(bytes / 1e5) / 10.0; };
+    const double peak = std::max({r.peak_bytes, result.refinement_peak_bytes, result.rvd_peak_bytes,
+                                  result.build_peak_bytes, result.cleanup_peak_bytes});
+    report["memory"] = {{"optimization_peak_mb", megabytes(r.peak_bytes)},
+                        {"refinement_peak_mb", megabytes(result.refinement_peak_bytes)},
+                        {"rvd_peak_mb", megabytes(result.rvd_peak_bytes)},
+                        {"mesh_building_peak_mb", megabytes(result.build_peak_bytes)},
+                        {"cleanup_peak_mb", megabytes(result.cleanup_peak_bytes)},
+                        {"peak_mb", megabytes(std::max(peak, memory.next_phase()))},
+                        {"per_phase", memory.resets()}};
     report["mesh_building"] = {{"cell_components", result.build.cell_components},
                                {"contact_components", result.build.contact_components},
                                {"junction_triangles", result.build.junction_triangles},

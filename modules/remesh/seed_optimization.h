@@ -61,6 +61,7 @@ struct SeedOptimizationResult {
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;
   double optimization_seconds = 0.0;
+  double peak_bytes = 0.0;  // peak resident memory of sampling and optimisation, when measured
 };
 
 /// Samples and optimises seeds on `model`.

@@ -213,6 +213,35 @@ TEST(Optimizer, StopsAtTheGradientThreshold) {
   EXPECT_LT(r.run.history.back().iteration, 500);
 }
 
+// The energy stop ends the run at the first iteration where F fell by less than tol · (F_0 − F)
+// over the window, for every optimiser, and not before.
+TEST(Optimizer, StopsWhenTheEnergyStalls) {
+  const StructuralModel model = build_model(test::flat_square(10));
+  for (OptimizerKind kind : {OptimizerKind::Lbfgs, OptimizerKind::Lloyd}) {
+    SeedOptions options;
+    options.num_seeds = 60;
+    options.optimizer.kind = kind;
+    options.optimizer.max_iterations = 1000;
+    options.optimizer.gradient_threshold = 0.0;
+    options.optimizer.energy_tolerance = 1e-2;
+    Logger log = quiet_logger();
+    Progress progress(false);
+    const SeedOptimizationResult r = optimize_seeds(model, options, log, progress);
+    const std::vector<IterationRecord>& h = r.run.history;
+    ASSERT_EQ(r.run.stop_reason, "energy") << to_string(kind);
+    const int n = static_cast<int>(h.size());
+    ASSERT_GT(n, kEnergyStopWindow + 1) << to_string(kind);
+    const auto stalled = [&](int i) {
+      return h[i - kEnergyStopWindow].energy - h[i].energy <
+             1e-2 * (h.front().energy - h[i].energy);
+    };
+    EXPECT_TRUE(stalled(n - 1)) << to_string(kind);
+    for (int i = kEnergyStopWindow; i < n - 1; ++i)
+      EXPECT_FALSE(stalled(i)) << to_string(kind) << " should have stopped at " << i;
+    EXPECT_LT(h.back().energy, h.front().energy) << to_string(kind);
+  }
+}
+
 TEST(Optimizer, RejectsBadParameters) {
   EXPECT_THROW(optimizer_from_string("newton"), ParameterError);
   EXPECT_EQ(optimizer_from_string("lloyd"), OptimizerKind::Lloyd);
