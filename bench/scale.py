@@ -4,7 +4,7 @@
 geogen scenarios at several resolutions (input triangles), each remeshed at several seed
 counts proportional to the model's area (--seeds-per-km2), then tet-meshed (`remesh
 --tetmesh`). Per run: wall time and peak memory of the whole command (wait4), and the
-remesh report's time and peak memory per phase. Fits time = c · triangles^a at the middle seed
+remesh report's time per phase and memory at the end of each (resident, and peak so far). Fits time = c · triangles^a at the middle seed
 density and time = c · seeds^b at the finest resolution (least squares in log-log), draws both
 (PNG, matplotlib: `scripts/setup.sh --bench` installs it) and prints a Markdown table for
 docs/benchmarks.md. A measurement, not a test.
@@ -123,7 +123,9 @@ def main():
                     rem, tet = report.get("remesh", {}), report.get("tetmesh", {})
                     for p in PHASES:
                         row[p + "_s"] = rem.get("timings", {}).get(p + "_s")
-                        row[p + "_mb"] = rem.get("memory", {}).get(p + "_peak_mb")
+                        memory = rem.get("memory", {}).get(p, {})
+                        row[p + "_resident_mb"] = memory.get("resident_mb")
+                        row[p + "_peak_mb"] = memory.get("peak_mb")
                     row["iterations"] = rem.get("iterations")
                     row["stop_reason"] = rem.get("stop_reason")
                     row["valid"] = rem.get("valid")

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "framework/core/error.h"
-#include "framework/host/peak_memory.h"
+#include "framework/host/process_memory.h"
 #include "framework/model/model_builder.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_sampling.h"
@@ -179,10 +179,8 @@ StructuralModel model_from_remeshed(const RemeshedSurface& surface, const Struct
 }
 
 RemeshResult remesh(const StructuralModel& input, const RemeshOptions& options, Logger& log, Progress& progress) {
-  PeakMemory memory;
-  SeedOptimizationResult seeds = optimize_seeds(input, options.seeds, log, progress);
-  seeds.peak_bytes = memory.bytes();
-  return remesh_from_seeds(input, std::move(seeds), options, log, progress);
+  return remesh_from_seeds(input, optimize_seeds(input, options.seeds, log, progress), options, log,
+                           progress);
 }
 
 RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationResult seeds,
@@ -196,7 +194,6 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
                                                : result.seeds.vertex_density;
   };
   auto t0 = std::chrono::steady_clock::now();
-  PeakMemory memory;
   // d_min from the resolution asked for; the refinement splits every cell whose pieces are
   // farther apart than that (all of them with keep_topology) before the mesh is built.
   const double h0 =
@@ -221,7 +218,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
     step.finish();
   }
   result.refinement_seconds = seconds_since(t0);
-  result.refinement_peak_bytes = memory.next_phase();
+  result.refinement_memory = process_memory();
 
   t0 = std::chrono::steady_clock::now();
   ProgressStep building(progress, "remesh: mesh building");
@@ -230,7 +227,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   rvd_options.threads = options.seeds.threads;
   const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
   result.rvd_seconds = seconds_since(t0);
-  result.rvd_peak_bytes = memory.next_phase();
+  result.rvd_memory = process_memory();
   // What the refinement left, on the diagram the mesh is built from.
   record_ball_failures(input, geometry, rvd, refine, log, result.refinement);
   result.refinement_seconds += result.refinement.rounds.back().seconds;
@@ -245,7 +242,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   result.min_feature = cleanup.min_feature;
   result.build = build_remeshed_surface(input, geometry, rvd, projector, build);
   result.build_seconds = seconds_since(t0);
-  result.build_peak_bytes = memory.next_phase();
+  result.build_memory = process_memory();
   building.finish();
   log.debug("remesh: " + std::to_string(result.build.cell_components) + " cell components, " +
             std::to_string(result.build.contact_components) + " contact components, " +
@@ -294,7 +291,7 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
     step.finish();
   }
   result.cleanup_seconds = seconds_since(t0);
-  result.cleanup_peak_bytes = memory.next_phase();
+  result.cleanup_memory = process_memory();
 
   const double resolution = 2.0 * h / std::sqrt(3.0);
   result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);

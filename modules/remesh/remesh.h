@@ -90,9 +90,8 @@ struct RemeshResult {
   BallRefinementResult refinement;  // seeds added where the topological ball property failed
   double min_feature = 0.0;         // d_min used
   double refinement_seconds = 0.0, rvd_seconds = 0.0, build_seconds = 0.0, cleanup_seconds = 0.0;
-  /// Peak resident memory of each phase (PeakMemory); 0 when unknown.
-  double refinement_peak_bytes = 0.0, rvd_peak_bytes = 0.0, build_peak_bytes = 0.0,
-         cleanup_peak_bytes = 0.0;
+  /// The process's memory at the end of each phase.
+  ProcessMemory refinement_memory, rvd_memory, build_memory, cleanup_memory;
 };
 
 /// Remeshes `input`. \throws ParameterError, ModelError (empty model), MesherError (the output

@@ -16,7 +16,6 @@
 #include "framework/host/memory_budget.h"
 #include "framework/host/module.h"
 #include "framework/host/parameter_limits.h"
-#include "framework/host/peak_memory.h"
 #include "framework/host/registry.h"
 #include "io/atomic_file.h"
 #include "io/model_io.h"
@@ -385,10 +384,10 @@ class RemeshModule final : public Module {
     remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
     remesh_options.refinement.iterations = static_cast<int>(parameters.get_int("refine-iterations"));
-    if (parameters.get_bool("zip-pinch-outs")) remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
-    PeakMemory memory;
-    SeedOptimizationResult seeds = optimize_seeds(*context.model, options, context.log, context.progress);
-    seeds.peak_bytes = memory.bytes();
+    if (parameters.get_bool("zip-pinch-outs"))
+      remesh_options.cleanup.zip_wedge_deg = parameters.get_double("zip-wedge");
+    SeedOptimizationResult seeds =
+        optimize_seeds(*context.model, options, context.log, context.progress);
     // The seeds are written before mesh building, so that they are there whatever happens next.
     if (parameters.has("dump-seeds")) {
       const std::string path = parameters.get_string("dump-seeds");
@@ -496,17 +495,22 @@ class RemeshModule final : public Module {
                          {"evaluation_ms_mean", r.run.evaluations > 0
                                                     ? 1000.0 * r.optimization_seconds / r.run.evaluations
                                                     : 0.0}};
-    // Peak resident memory per phase of the kept remesh (MB), and the whole command's so far.
+    // The process's memory at the end of each phase of the kept remesh (MB): what the phase
+    // still holds, and the peak so far (a phase whose peak is above the one before set it).
     const auto megabytes = [](double bytes) { return std::round(bytes / 1e5) / 10.0; };
-    const double peak = std::max({r.peak_bytes, result.refinement_peak_bytes, result.rvd_peak_bytes,
-                                  result.build_peak_bytes, result.cleanup_peak_bytes});
-    report["memory"] = {{"optimization_peak_mb", megabytes(r.peak_bytes)},
-                        {"refinement_peak_mb", megabytes(result.refinement_peak_bytes)},
-                        {"rvd_peak_mb", megabytes(result.rvd_peak_bytes)},
-                        {"mesh_building_peak_mb", megabytes(result.build_peak_bytes)},
-                        {"cleanup_peak_mb", megabytes(result.cleanup_peak_bytes)},
-                        {"peak_mb", megabytes(std::max(peak, memory.next_phase()))},
-                        {"per_phase", memory.resets()}};
+    const std::pair<const char*, ProcessMemory> phases[] = {
+        {"optimization", r.memory},
+        {"refinement", result.refinement_memory},
+        {"rvd", result.rvd_memory},
+        {"mesh_building", result.build_memory},
+        {"cleanup", result.cleanup_memory}};
+    double peak = process_memory().peak_bytes;
+    for (const auto& [name, m] : phases) {
+      report["memory"][name] = {{"resident_mb", megabytes(m.resident_bytes)},
+                                {"peak_mb", megabytes(m.peak_bytes)}};
+      peak = std::max(peak, m.peak_bytes);  // the counters lag by a few pages
+    }
+    report["memory"]["peak_mb"] = megabytes(peak);
     report["mesh_building"] = {{"cell_components", result.build.cell_components},
                                {"contact_components", result.build.contact_components},
                                {"junction_triangles", result.build.junction_triangles},

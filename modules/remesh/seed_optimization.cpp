@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "framework/core/error.h"
+#include "framework/host/process_memory.h"
 #include "modules/remesh/seed_energy.h"
 #include "modules/remesh/seed_sampling.h"
 
@@ -140,6 +141,7 @@ SeedOptimizationResult optimize_seeds(const ModelGeometry& geometry, std::vector
   result.seeds = std::move(initial);
   result.run = minimize_seed_energy(objective, result.seeds, options.optimizer, log, progress);
   result.optimization_seconds = since(t0);
+  result.memory = process_memory();
   if (!result.run.history.empty()) {
     const IterationRecord& a = result.run.history.front();
     const IterationRecord& b = result.run.history.back();

@@ -11,6 +11,7 @@
 
 #include "framework/core/types.h"
 #include "framework/host/log.h"
+#include "framework/host/process_memory.h"
 #include "framework/model/structural_model.h"
 #include "modules/remesh/layer_sizing.h"
 #include "modules/remesh/model_geometry.h"
@@ -61,7 +62,7 @@ struct SeedOptimizationResult {
   OptimizationRun run;               // per-iteration F, F_CVT, F_B, |grad F|, stop reason
   double sampling_seconds = 0.0;
   double optimization_seconds = 0.0;
-  double peak_bytes = 0.0;  // peak resident memory of sampling and optimisation, when measured
+  ProcessMemory memory;  // the process's memory at the end of the optimisation
 };
 
 /// Samples and optimises seeds on `model`.
