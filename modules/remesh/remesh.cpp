@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <iterator>
+#include <map>
+#include <memory>
 #include <set>
 
 #include "framework/core/error.h"
@@ -222,27 +223,35 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
 
   t0 = std::chrono::steady_clock::now();
   ProgressStep building(progress, "remesh: mesh building");
-  const ModelGeometry geometry(input, seed_density());
-  RvdOptions rvd_options;
-  rvd_options.threads = options.seeds.threads;
-  const RestrictedVoronoiDiagram rvd = compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
-  result.rvd_seconds = seconds_since(t0);
-  result.rvd_memory = process_memory();
-  // What the refinement left, on the diagram the mesh is built from.
-  record_ball_failures(input, geometry, rvd, refine, log, result.refinement);
-  result.refinement_seconds += result.refinement.rounds.back().seconds;
+  std::unique_ptr<const SurfaceProjector> projector;
+  double resolution = 0.0;  // the length lost features are compared with (FeatureAudit)
+  {
+    const ModelGeometry geometry(input, seed_density());
+    RvdOptions rvd_options;
+    rvd_options.threads = options.seeds.threads;
+    const RestrictedVoronoiDiagram rvd =
+        compute_restricted_voronoi_diagram(geometry, result.seeds.seeds, rvd_options);
+    result.rvd_seconds = seconds_since(t0);
+    result.rvd_memory = process_memory();
+    // What the refinement left, on the diagram the mesh is built from.
+    record_ball_failures(input, geometry, rvd, refine, log, result.refinement);
+    result.refinement_seconds += result.refinement.rounds.back().seconds;
 
-  t0 = std::chrono::steady_clock::now();
-  const SurfaceProjector projector(input);
-  // The mean edge length where ρ = 1: what the user's resolution asks for.
-  const double h = edge_length_for_seeds(geometry.root_mass(), static_cast<int>(result.seeds.seeds.size()));
-  MeshBuildOptions build = options.build;
-  if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
-  if (cleanup.fidelity_tolerance < 0.0) cleanup.fidelity_tolerance = -cleanup.fidelity_tolerance * h;
-  result.min_feature = cleanup.min_feature;
-  result.build = build_remeshed_surface(input, geometry, rvd, projector, build);
+    t0 = std::chrono::steady_clock::now();
+    projector = std::make_unique<const SurfaceProjector>(input);
+    // The mean edge length where ρ = 1: what the user's resolution asks for.
+    const double h =
+        edge_length_for_seeds(geometry.root_mass(), static_cast<int>(result.seeds.seeds.size()));
+    MeshBuildOptions build = options.build;
+    if (build.sharp_scale == 0.0) build.sharp_scale = 0.5 * h;
+    if (cleanup.fidelity_tolerance < 0.0)
+      cleanup.fidelity_tolerance = -cleanup.fidelity_tolerance * h;
+    result.min_feature = cleanup.min_feature;
+    result.build = build_remeshed_surface(input, geometry, rvd, *projector, build);
+    result.build_memory = process_memory();
+    resolution = 2.0 * h / std::sqrt(3.0);
+  }  // The clean-up needs neither the diagram nor the flattened input: freed before it runs.
   result.build_seconds = seconds_since(t0);
-  result.build_memory = process_memory();
   building.finish();
   log.debug("remesh: " + std::to_string(result.build.cell_components) + " cell components, " +
             std::to_string(result.build.contact_components) + " contact components, " +
@@ -269,12 +278,12 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
     // and the more valid result stays.
     const bool zips = cleanup.zip_wedge_deg > 0.0;
     RemeshedSurface built = zips ? result.build.surface : RemeshedSurface{};
-    result.cleanup = clean_up(result.build.surface, input, projector, cleanup, &progress);
+    result.cleanup = clean_up(result.build.surface, input, *projector, cleanup, &progress);
     const int zipped_edits = result.cleanup.pinch_zips + result.cleanup.pinch_rungs + result.cleanup.pinch_pockets;
     if (zips && zipped_edits > 0 && result.cleanup.invalid_left() > 0) {
       CleanupOptions plain = cleanup;
       plain.zip_wedge_deg = 0.0;
-      CleanupReport without = clean_up(built, input, projector, plain, &progress);
+      CleanupReport without = clean_up(built, input, *projector, plain, &progress);
       if (without.invalid_left() < result.cleanup.invalid_left()) {
         log.warning("remesh: the pinch-out zip left the surfaces invalid (" +
                     std::to_string(result.cleanup.invalid_left()) + " defects, " +
@@ -293,7 +302,6 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   result.cleanup_seconds = seconds_since(t0);
   result.cleanup_memory = process_memory();
 
-  const double resolution = 2.0 * h / std::sqrt(3.0);
   result.model = model_from_remeshed(result.build.surface, input, &result.topology, resolution);
   // Pockets thinner than a cell are the resolution's doing: one side goes (a few rounds, as
   // pockets next to each other open one by one). A round is kept only when the regions got
@@ -305,10 +313,9 @@ RemeshResult remesh_from_seeds(const StructuralModel& input, SeedOptimizationRes
   };
   for (int round = 0; options.clean_up && round < 3 && !result.topology.regions_gained.empty(); ++round) {
     RemeshedSurface before = result.build.surface;
-    const std::vector<PocketRemoval> removed =
-        remove_pockets(result.build.surface, input, result.model, result.topology.input_part_of_output,
-                       result.topology.output_region_of_input, projector, resolution,
-                       result.min_feature);
+    const std::vector<PocketRemoval> removed = remove_pockets(
+        result.build.surface, input, result.model, result.topology.input_part_of_output,
+        result.topology.output_region_of_input, *projector, resolution, result.min_feature);
     if (removed.empty()) break;
     TopologyReport topology;
     StructuralModel model = model_from_remeshed(result.build.surface, input, &topology, resolution);

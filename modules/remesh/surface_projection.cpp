@@ -35,8 +35,6 @@ Vec3 closest_on_segment(const Vec3& a, const Vec3& b, const Vec3& x) {
 struct SurfaceProjector::Trees {
   std::vector<std::vector<Triangle3>> triangles;  // per part
   std::vector<std::unique_ptr<Tree>> part_tree;
-  std::vector<Triangle3> all_triangles;
-  std::unique_ptr<Tree> model_tree;
 };
 
 SurfaceProjector::SurfaceProjector(const StructuralModel& model) : trees_(std::make_unique<Trees>()), model_(model) {
@@ -52,7 +50,6 @@ SurfaceProjector::SurfaceProjector(const StructuralModel& model) : trees_(std::m
       const Vec3& c = model.vertices[part.model_vertex[h.next().to().idx()]];
       list.emplace_back(to_cgal(a), to_cgal(b), to_cgal(c));
     }
-    trees_->all_triangles.insert(trees_->all_triangles.end(), list.begin(), list.end());
   }
   trees_->part_tree.resize(model.parts.size());
   for (size_t p = 0; p < model.parts.size(); ++p) {
@@ -63,9 +60,6 @@ SurfaceProjector::SurfaceProjector(const StructuralModel& model) : trees_(std::m
     trees_->part_tree[p]->build();
     trees_->part_tree[p]->accelerate_distance_queries();
   }
-  trees_->model_tree = std::make_unique<Tree>(trees_->all_triangles.begin(), trees_->all_triangles.end());
-  trees_->model_tree->build();
-  trees_->model_tree->accelerate_distance_queries();
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
@@ -90,7 +84,5 @@ Vec3 SurfaceProjector::on_contact(int contact, const Vec3& x) const {
   }
   return best;
 }
-
-Vec3 SurfaceProjector::on_model(const Vec3& x) const { return from_cgal(trees_->model_tree->closest_point(to_cgal(x))); }
 
 }  // namespace voroseal

@@ -22,8 +22,6 @@ class SurfaceProjector {
   Vec3 on_part(int part, const Vec3& x) const;
   /// Closest point of contact `contact` to x.
   Vec3 on_contact(int contact, const Vec3& x) const;
-  /// Closest point of the whole model to x.
-  Vec3 on_model(const Vec3& x) const;
   /// Distance from x to surface part `part`.
   double distance_to_part(int part, const Vec3& x) const { return (on_part(part, x) - x).norm(); }
 
