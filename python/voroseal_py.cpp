@@ -198,9 +198,10 @@ void set_model(Session& session, const std::shared_ptr<StructuralModel>& model) 
     session.context.input.reset();
     return;
   }
-  // The module works on a copy: the caller's Model is never changed behind its back.
+  // Shared, not copied: a module replaces the current model and never changes it, so the
+  // caller's Model is never changed behind its back.
   session.context.input = model;
-  session.context.model = std::make_shared<StructuralModel>(*model);
+  session.context.model = model;
 }
 
 }  // namespace

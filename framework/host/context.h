@@ -21,7 +21,8 @@ struct Context {
 
   std::string input_path;                       // the model file read, if any
   std::shared_ptr<const StructuralModel> input;  // the model as read (reference for fidelity)
-  std::shared_ptr<StructuralModel> model;        // current model (remesh replaces it)
+  /// The current model; steps replace it, never change it (it may be `input` itself).
+  std::shared_ptr<const StructuralModel> model;
   std::shared_ptr<VolumeMesh> volume;            // set by tetmesh
   nlohmann::json report = nlohmann::json::object();  // report[module name] = its results
   int threads = 0;                              // 0: all cores

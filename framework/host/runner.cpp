@@ -13,7 +13,7 @@ void load_model(Context& context, const std::string& path, const ReadOptions& op
   auto model = std::make_shared<StructuralModel>(read_model(path, options));
   context.input_path = path;
   context.input = model;
-  context.model = std::make_shared<StructuralModel>(*model);
+  context.model = model;  // shared: steps replace the current model, never change it
 }
 
 bool load_volume_mesh(Context& context, const std::string& path) {

@@ -4,6 +4,8 @@
 //
 // Build your own the same way: derive voroseal::Module, export voroseal_register_plugin with C
 // linkage, link voroseal_framework, and put the .so in a directory of VOROSEAL_PLUGIN_PATH.
+#include <memory>
+
 #include "framework/core/error.h"
 #include "framework/host/module.h"
 #include "framework/host/registry.h"
@@ -23,7 +25,10 @@ class ExampleOffsetModule : public voroseal::Module {
   void run(voroseal::Context& context, const voroseal::Parameters& parameters) const override {
     if (!context.model) throw voroseal::ModelError("example-offset needs a model");
     const voroseal::Vec3 shift(parameters.get_double("dx"), parameters.get_double("dy"), parameters.get_double("dz"));
-    context.model->frame.origin += shift;
+    // Models in the context are immutable: a step makes a changed copy and replaces it.
+    auto moved = std::make_shared<voroseal::StructuralModel>(*context.model);
+    moved->frame.origin += shift;
+    context.model = moved;
     context.report["example-offset"] = {{"offset", {shift.x(), shift.y(), shift.z()}},
                                         {"triangles", context.model->num_triangles()}};
     context.log.info("example-offset: moved the model by " + std::to_string(shift.norm()));
