@@ -320,7 +320,8 @@ class RemeshModule final : public Module {
       throw ParameterError("remesh: give --edge-length or --seeds");
     }
     options.gradation = parameters.get_double("gradation");
-    if (parameters.has("size")) options.sizes = parse_size_rules(parameters.get_string("size"));
+    if (parameters.has("size"))
+      options.sizes = parse_size_rules(parameters.get_string("size"), "--size");
     if (parameters.has("size-field")) {
       const SizeSamples samples = read_size_field(parameters.get_string("size-field"));
       std::vector<Vec3> local;

@@ -1,7 +1,5 @@
 #include "modules/remesh/surface_sizing.h"
 
-#include <fnmatch.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,16 +20,6 @@ namespace {
 
 constexpr const char* kKindPrefix = "kind:";
 
-std::string trimmed(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-bool glob_matches(const std::string& pattern, const std::string& name, int flags = 0) {
-  return fnmatch(pattern.c_str(), name.c_str(), flags) == 0;
-}
-
 // The parts a rule names: by kind, by interface or part name, or the parts bounding a named
 // region or layer.
 std::vector<int> parts_named(const StructuralModel& model, const std::string& pattern) {
@@ -42,19 +30,15 @@ std::vector<int> parts_named(const StructuralModel& model, const std::string& pa
   if (pattern.rfind(kKindPrefix, 0) == 0) {
     const std::string kind = pattern.substr(std::string(kKindPrefix).size());
     for (const Interface& i : model.interfaces)
-      if (glob_matches(kind, to_string(i.kind), FNM_CASEFOLD))
+      if (name_matches(kind, to_string(i.kind), true))
         for (int p : i.parts) named[p] = 1;
   } else {
     for (const Interface& i : model.interfaces)
-      if (glob_matches(pattern, i.name))
+      if (name_matches(pattern, i.name))
         for (int p : i.parts) named[p] = 1;
     for (size_t p = 0; p < model.parts.size(); ++p)
-      if (glob_matches(pattern, model.parts[p].name)) named[p] = 1;
-    for (size_t r = 0; r < model.regions.size(); ++r)
-      if (glob_matches(pattern, model.regions[r].name)) region_parts(static_cast<int>(r));
-    for (const Layer& l : model.layers)
-      if (glob_matches(pattern, l.name))
-        for (int r : l.regions) region_parts(r);
+      if (name_matches(pattern, model.parts[p].name)) named[p] = 1;
+    for (int r : regions_named(model, pattern)) region_parts(r);
   }
   std::vector<int> parts;
   for (size_t p = 0; p < named.size(); ++p)
@@ -84,28 +68,6 @@ std::string known_names(const StructuralModel& model, const std::string& pattern
 }
 
 }  // namespace
-
-std::vector<SizeRule> parse_size_rules(const std::string& text) {
-  std::vector<SizeRule> rules;
-  size_t begin = 0;
-  while (begin <= text.size()) {
-    const size_t end = std::min(text.find_first_of(",\n", begin), text.size());
-    const std::string item = trimmed(text.substr(begin, end - begin));
-    begin = end + 1;
-    if (item.empty()) continue;
-    const size_t eq = item.rfind('=');
-    const std::string bad = "parameter --size: '" + item + "' ";
-    if (eq == std::string::npos || eq == 0)
-      throw ParameterError(bad + "is not NAME=H (a surface, region or layer name, or kind:fault)");
-    const std::string number = trimmed(item.substr(eq + 1));
-    char* stop = nullptr;
-    const double h = std::strtod(number.c_str(), &stop);
-    if (number.empty() || *stop != '\0' || !std::isfinite(h) || !(h > 0.0))
-      throw ParameterError(bad + "needs a positive size after '='");
-    rules.push_back({trimmed(item.substr(0, eq)), h});
-  }
-  return rules;
-}
 
 void grade_sizes_along_edges(const StructuralModel& model, double slope,
                              std::vector<double>& size) {

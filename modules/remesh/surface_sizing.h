@@ -15,20 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "framework/model/size_rules.h"
 #include "framework/model/structural_model.h"
 #include "modules/remesh/size_field.h"
 
 namespace voroseal {
-
-/// One `PATTERN=H` of `--size`.
-struct SizeRule {
-  std::string pattern;
-  double size = 0.0;
-};
-
-/// Rules separated by commas or new lines (`--size` given several times): "kind:fault=50,F1=20".
-/// \throws ParameterError naming the rule that is not PATTERN=H with a positive finite H.
-std::vector<SizeRule> parse_size_rules(const std::string& text);
 
 struct SurfaceSizing {
   std::vector<double> size;            // target edge length at every model vertex, graded

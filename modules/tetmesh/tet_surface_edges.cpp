@@ -135,13 +135,16 @@ std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model
   return {edges.begin(), edges.end()};
 }
 
-std::vector<long> tets_over_volume(const VolumeMesh& mesh, double max_volume) {
+std::vector<long> tets_over_volume(const VolumeMesh& mesh,
+                                   const std::function<double(int region)>& bound) {
   std::vector<std::pair<double, long>> over;
   for (size_t i = 0; i < mesh.tets.size(); ++i) {
+    const double b = bound(i < mesh.tet_region.size() ? mesh.tet_region[i] : -1);
+    if (!(b > 0.0)) continue;
     const Tetrahedron& t = mesh.tets[i];
     const double v = std::abs(tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]],
                                          mesh.vertices[t[2]], mesh.vertices[t[3]]));
-    if (v > max_volume) over.emplace_back(v, static_cast<long>(i));
+    if (v > b) over.emplace_back(v, static_cast<long>(i));
   }
   std::sort(over.begin(), over.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "framework/model/structural_model.h"
@@ -28,7 +29,9 @@ std::vector<std::array<int, 2>> edges_encroached_by(const StructuralModel& model
                                                     const VolumeMesh& mesh,
                                                     const std::vector<long>& tets);
 
-/// The tets of `mesh` whose volume exceeds `max_volume` (> 0), the largest first.
-std::vector<long> tets_over_volume(const VolumeMesh& mesh, double max_volume);
+/// The tets of `mesh` whose volume exceeds the bound of their region (`bound(region)`; 0 or
+/// less: none), the largest first.
+std::vector<long> tets_over_volume(const VolumeMesh& mesh,
+                                   const std::function<double(int region)>& bound);
 
 }  // namespace voroseal

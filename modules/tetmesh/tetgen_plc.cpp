@@ -16,7 +16,8 @@ std::vector<int> plc_vertices(const ModelTriangles& flat, size_t model_vertices)
   return vertices;
 }
 
-PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
+PlcMap build_plc(const StructuralModel& model, tetgenio& in,
+                 const std::vector<double>& region_max_volume) {
   PlcMap map;
   const ModelTriangles flat = flatten(model);
   if (flat.triangles.empty()) throw ModelError("model '" + model.name + "' has no triangles to tet-mesh");
@@ -58,7 +59,10 @@ PlcMap build_plc(const StructuralModel& model, tetgenio& in) {
     REAL* entry = in.regionlist + 5 * r;
     for (int d = 0; d < 3; ++d) entry[d] = map.region_points[r].point[d];
     entry[3] = r + 1;  // attribute (used with A)
-    entry[4] = -1.0;   // no per-region volume bound
+    // The region's volume bound (with a bare switch `a`); -1: none.
+    const bool bounded =
+        static_cast<size_t>(r) < region_max_volume.size() && region_max_volume[r] > 0.0;
+    entry[4] = bounded ? region_max_volume[r] : -1.0;
   }
   return map;
 }

@@ -32,10 +32,12 @@ std::vector<int> plc_vertices(const ModelTriangles& flat, size_t model_vertices)
 
 /// Fills `in` (which must be empty) with the model: the vertices used by its triangles, one
 /// triangular facet per triangle with marker = part + 1, and one region point per region with
-/// attribute = region + 1 and no volume bound. Coordinates are the model's local frame.
+/// attribute = region + 1 and the volume bound region_max_volume[region] (none where absent or
+/// 0; TetGen applies them with a bare switch `a`). Coordinates are the model's local frame.
 /// \throws ModelError when the model has no triangles or no regions, or a region has no
 ///         interior point (see region_points()).
-PlcMap build_plc(const StructuralModel& model, tetgenio& in);
+PlcMap build_plc(const StructuralModel& model, tetgenio& in,
+                 const std::vector<double>& region_max_volume = {});
 
 /// Reorders the facets of `in` (and `map` with them) so that position i holds the facet that
 /// was at position order[i]. TetGen recovers the facets' edges in that order under Y, and some

@@ -13,6 +13,7 @@
 #include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
 #include "framework/model/contact_wedges.h"
+#include "framework/model/size_rules.h"
 #include "io/model_io.h"
 #include "modules/tetmesh/tetrahedralize.h"
 
@@ -37,6 +38,34 @@ double meshed_volume(const StructuralModel& model) {
   for (const Region& region : model.regions) volume += std::abs(model.signed_volume(region.sides));
   if (model.regions.empty()) volume = std::abs(model.signed_volume(model.universe.sides));
   return volume;
+}
+
+// Σ volume / bound over the regions with a bound: the tets the bounds alone ask for.
+double bounded_tets(const StructuralModel& model, const TetmeshOptions& options) {
+  if (model.regions.empty()) return meshed_volume(model) / options.volume_bound(0);
+  double tets = 0.0;
+  for (size_t r = 0; r < model.regions.size(); ++r)
+    if (const double bound = options.volume_bound(static_cast<int>(r)); bound > 0.0)
+      tets += std::abs(model.signed_volume(model.regions[r].sides)) / bound;
+  return tets;
+}
+
+// The volume bound per region of `--region-size` rules: a regular tet of edge H, the smallest
+// where rules meet. \throws ParameterError for a rule that names no region.
+std::vector<double> region_volume_bounds(const StructuralModel& model,
+                                         const std::vector<SizeRule>& rules) {
+  std::vector<double> bounds(model.regions.size(), 0.0);
+  for (const SizeRule& rule : rules) {
+    const std::vector<int> regions = regions_named(model, rule.pattern);
+    if (regions.empty())
+      throw ParameterError("parameter --region-size: '" + rule.pattern +
+                           "' names no region or layer of the model (it has " +
+                           region_and_layer_names(model) + ")");
+    const double volume = std::pow(rule.size, 3) / (6.0 * std::sqrt(2.0));
+    for (int r : regions)
+      if (bounds[r] == 0.0 || volume < bounds[r]) bounds[r] = volume;
+  }
+  return bounds;
 }
 
 // The tets of `mesh` with a dihedral angle under kFlatTetDeg, and the flattest of them.
@@ -83,6 +112,12 @@ class TetmeshModule : public Module {
                          "maximum tet volume in model units^3 (switch a); no bound when absent"};
     volume.min = 0.0;
     volume.max = kMaxModelVolume;
+    ParameterSpec region_size{
+        "region-size", ParameterType::String, nullptr,
+        "target tet edge length in some regions, NAME=H (repeatable, or comma-separated): a "
+        "region or layer name (globs); a volume bound H^3/(6 sqrt 2) there (a regular tet of "
+        "edge H), the smaller where --max-volume also holds"};
+    region_size.repeatable = true;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
                        "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles "
                        "(bisected only by --refine-surface-below)"};
@@ -114,7 +149,8 @@ class TetmeshModule : public Module {
         "triangle); the command fails when the bound still does not hold"};
     size.min = 0;
     size.max = kMaxSizeRounds;
-    return {output, quality, dihedral, volume, keep, slivers, optimise, refine, rounds, size};
+    return {output,  quality,  dihedral, volume, region_size, keep,
+            slivers, optimise, refine,   rounds, size};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -124,12 +160,14 @@ class TetmeshModule : public Module {
     options.radius_edge_ratio = parameters.get_double("quality");
     options.min_dihedral_deg = parameters.get_double("min-dihedral");
     if (parameters.has("max-volume")) options.max_volume = parameters.get_double("max-volume");
-    if (options.max_volume > 0.0) {
+    if (parameters.has("region-size"))
+      options.region_max_volume = region_volume_bounds(
+          model, parse_size_rules(parameters.get_string("region-size"), "--region-size"));
+    if (options.bounded()) {
       // Refused before TetGen starts: a tiny bound would run for hours towards billions of tets.
-      const double tets = kTetsPerBoundVolume * meshed_volume(model) / options.max_volume;
+      const double tets = kTetsPerBoundVolume * bounded_tets(model, options);
       char asked[96];
-      std::snprintf(asked, sizeof asked, "tetmesh --max-volume %g (%.3g tets)", options.max_volume,
-                    tets);
+      std::snprintf(asked, sizeof asked, "tetmesh with its volume bounds (%.3g tets)", tets);
       require_memory(context, tets * kBytesPerTet, asked);
     }
     options.keep_surface = parameters.get_bool("keep-surface");
@@ -151,9 +189,20 @@ class TetmeshModule : public Module {
     const StructuralModel& meshed = run.refined_model ? *run.refined_model : model;
     const long nonconforming = static_cast<long>(model_triangles_not_in_tets(meshed, *mesh).size());
 
+    // The largest tet of each region, against its volume bound.
+    std::vector<double> largest(model.regions.size(), 0.0);
+    for (size_t t = 0; t < mesh->tets.size(); ++t) {
+      const int r = mesh->tet_region[t];
+      if (r < 0 || static_cast<size_t>(r) >= largest.size()) continue;
+      const Tetrahedron& tet = mesh->tets[t];
+      largest[r] = std::max(largest[r],
+                            std::abs(tet_volume(mesh->vertices[tet[0]], mesh->vertices[tet[1]],
+                                                mesh->vertices[tet[2]], mesh->vertices[tet[3]])));
+    }
     nlohmann::json regions = nlohmann::json::array();
     double max_error = 0.0;
     for (size_t r = 0; r < model.regions.size(); ++r) {
+      const double bound = options.volume_bound(static_cast<int>(r));
       const double enclosed = -model.signed_volume(model.regions[r].sides);
       const double meshed = r < quality.region_volume.size() ? quality.region_volume[r] : 0.0;
       const long tets = r < quality.region_tets.size() ? quality.region_tets[r] : 0;
@@ -163,7 +212,9 @@ class TetmeshModule : public Module {
                          {"tets", tets},
                          {"volume", meshed},
                          {"enclosed_volume", enclosed},
-                         {"relative_error", error}});
+                         {"relative_error", error},
+                         {"largest_tet", largest[r]},
+                         {"volume_bound", bound > 0.0 ? nlohmann::json(bound) : nlohmann::json()}});
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The tets below the dihedral bound, by what holds them there (SliverCensus).

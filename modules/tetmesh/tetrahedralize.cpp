@@ -549,8 +549,23 @@ std::pair<double, long> surface_needles(const StructuralModel& model) {
 
 }  // namespace
 
+double TetmeshOptions::volume_bound(int region) const {
+  double bound = max_volume > 0.0 ? max_volume : 0.0;
+  if (region >= 0 && static_cast<size_t>(region) < region_max_volume.size()) {
+    const double own = region_max_volume[region];
+    if (own > 0.0 && (bound == 0.0 || own < bound)) bound = own;
+  }
+  return bound;
+}
+
+bool TetmeshOptions::bounded() const {
+  return max_volume > 0.0 || std::any_of(region_max_volume.begin(), region_max_volume.end(),
+                                         [](double v) { return v > 0.0; });
+}
+
 double optimisation_threshold(const TetmeshOptions& options) {
-  return options.radius_edge_ratio > 0.0 && options.max_volume == 0.0 ? options.sliver_max_dihedral_deg : 0.0;
+  return options.radius_edge_ratio > 0.0 && !options.bounded() ? options.sliver_max_dihedral_deg
+                                                               : 0.0;
 }
 
 SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
@@ -622,6 +637,9 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
     if (options.min_dihedral_deg > 0.0) s += "/" + number(options.min_dihedral_deg);
   }
   if (options.max_volume > 0.0) s += "a" + number(options.max_volume);
+  // A bare `a` (no number next) applies the bounds of the region list.
+  const auto& regions = options.region_max_volume;
+  if (std::any_of(regions.begin(), regions.end(), [](double v) { return v > 0.0; })) s += "a";
   if (optimisation_threshold(options) > 0.0) s += "o/" + number(options.sliver_max_dihedral_deg);
   s += "A";
   if (options.keep_surface) s += "Y";
@@ -638,7 +656,7 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
                                TetmeshRun& info) {
   auto start = std::chrono::steady_clock::now();
   tetgenio in;
-  PlcMap map = build_plc(model, in);
+  PlcMap map = build_plc(model, in, options.region_max_volume);
   const int plc_points = in.numberofpoints;
   const std::vector<REAL> plc_coordinates(in.pointlist, in.pointlist + 3 * plc_points);
   info.plc_seconds = seconds_since(start);
@@ -798,17 +816,18 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
 }
 
 /// Size rounds (see TetmeshOptions::size_rounds): under Y, TetGen rejects every point inside
-/// the diametral ball of a kept surface triangle, so a tet over max_volume next to a coarse
+/// the diametral ball of a kept surface triangle, so a tet over its volume bound next to a coarse
 /// triangle stays; the surface edges under such tets are bisected and TetGen runs again until
 /// every tet is within the bound. Every round is kept: the bound, not the angles, is the aim.
 void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
                      TetmeshRun& info, ConvertedMesh& best) {
-  if (!options.keep_surface || !(options.max_volume > 0.0)) return;
+  if (!options.keep_surface || !options.bounded()) return;
+  const auto bound = [&](int region) { return options.volume_bound(region); };
   double seconds = info.plc_seconds + info.tetgen_seconds;
   std::shared_ptr<const StructuralModel> refined;
   int bisected = 0, rounds = 0;
   for (int round = 1; round <= options.size_rounds; ++round) {
-    const std::vector<long> over = tets_over_volume(best.mesh, options.max_volume);
+    const std::vector<long> over = tets_over_volume(best.mesh, bound);
     if (over.empty()) break;
     const StructuralModel& from = refined ? *refined : model;
     std::vector<std::array<int, 2>> edges = edges_encroached_by(from, best.mesh, over);
@@ -830,8 +849,8 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
     }
     seconds += trial.plc_seconds + trial.tetgen_seconds;
     log.debug("tetmesh: size round " + std::to_string(round) + ": " + std::to_string(over.size()) +
-              " tets over " + number(options.max_volume) + ", " + std::to_string(split) +
-              " surface edges split, " + std::to_string(next->num_triangles()) + " triangles");
+              " tets over their bound, " + std::to_string(split) + " surface edges split, " +
+              std::to_string(next->num_triangles()) + " triangles");
     bisected += split;
     rounds = round;
     info = std::move(trial);
@@ -845,17 +864,16 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
   if (refined)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
              std::to_string(rounds) +
-             " rounds (same surfaces, finer triangles) under tets over --max-volume " +
-             number(options.max_volume));
+             " rounds (same surfaces, finer triangles) under tets over the volume bound");
 }
 
-/// Throws when a tet of `mesh` exceeds options.max_volume (TetGen's bound, and a last check:
+/// Throws when a tet of `mesh` exceeds its volume bound (TetGen's bound, and a last check:
 /// TetGen's smoothing moves points after refinement), saying why the bound could not hold.
 void require_volume_bound(const StructuralModel& model, const TetmeshOptions& options,
                           const TetmeshRun& info, const VolumeMesh& mesh) {
-  if (!(options.max_volume > 0.0)) return;
-  const std::vector<long> over =
-      tets_over_volume(mesh, options.max_volume * (1.0 + kVolumeBoundSlack));
+  if (!options.bounded()) return;
+  const std::vector<long> over = tets_over_volume(
+      mesh, [&](int region) { return options.volume_bound(region) * (1.0 + kVolumeBoundSlack); });
   if (over.empty()) return;
   const Tetrahedron& t = mesh.tets[over.front()];
   const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
@@ -864,9 +882,11 @@ void require_volume_bound(const StructuralModel& model, const TetmeshOptions& op
   const int region = mesh.tet_region[over.front()];
   const StructuralModel& meshed = info.refined_model ? *info.refined_model : model;
   std::ostringstream message;
-  message << "--max-volume " << number(options.max_volume) << " cannot hold on model '"
-          << model.name << "': " << over.size() << " tets are larger, the largest "
-          << number(largest) << " at " << file_point(model, (p[0] + p[1] + p[2] + p[3]) / 4.0);
+  const double bound = options.volume_bound(region);
+  message << (bound == options.max_volume ? "--max-volume " : "the --region-size volume bound ")
+          << number(bound) << " cannot hold on model '" << model.name << "': " << over.size()
+          << " tets are over their bound, the largest " << number(largest) << " at "
+          << file_point(model, (p[0] + p[1] + p[2] + p[3]) / 4.0);
   if (region >= 0 && region < static_cast<int>(model.regions.size()))
     message << " in region '" << model.regions[region].name << "'";
   if (options.keep_surface)
@@ -915,7 +935,9 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
               " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
     if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
-    if (options.max_volume > 0.0 && !tets_over_volume(mesh.mesh, options.max_volume).empty()) break;
+    if (options.bounded() &&
+        !tets_over_volume(mesh.mesh, [&](int r) { return options.volume_bound(r); }).empty())
+      break;
     bisected += split;
     trial.surface_rounds = round;
     info = std::move(trial);
@@ -945,6 +967,10 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
   if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
     throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
+  for (double v : options.region_max_volume)
+    if (!(v >= 0.0 && std::isfinite(v)))
+      throw ParameterError("maximum tet volume " + number(v) +
+                           " of a region must be finite and >= 0");
   if (!(options.sliver_max_dihedral_deg == 0.0 ||
         (options.sliver_max_dihedral_deg > 90.0 && options.sliver_max_dihedral_deg < 180.0)))
     throw ParameterError("sliver dihedral threshold " + number(options.sliver_max_dihedral_deg) +

@@ -26,6 +26,14 @@ struct TetmeshOptions {
   double min_dihedral_deg = 10.0;
   /// Maximum tet volume in model units³, switch `a<volume>`; 0 = no bound.
   double max_volume = 0.0;
+  /// Maximum tet volume per model region (`--region-size`: TetGen's region constraints, switch
+  /// `a` with the bound in the region list); 0 or absent = none. Where both hold, the smaller.
+  std::vector<double> region_max_volume;
+
+  /// The volume bound of region r (0: none).
+  double volume_bound(int region) const;
+  /// True when some tet has a volume bound.
+  bool bounded() const;
   /// TetGen's mesh optimisation (after refinement) works on every tet whose largest dihedral
   /// angle exceeds this (degrees): edge/face flips (switch `o/<angle>`), smoothing of the points
   /// TetGen added, and sliver splitting by a point inside the sliver's edge star (both set in

@@ -33,7 +33,8 @@ std::vector<int> vertices_of(const StructuralModel& model, const std::string& na
 }
 
 TEST(SurfaceSizing, RulesAreReadFromCommasAndLinesAndBadOnesRefused) {
-  const std::vector<SizeRule> rules = parse_size_rules(" horizon=0.1, kind:fault = 5e-2\nF*=3,");
+  const std::vector<SizeRule> rules =
+      parse_size_rules(" horizon=0.1, kind:fault = 5e-2\nF*=3,", "--size");
   ASSERT_EQ(rules.size(), 3u);
   EXPECT_EQ(rules[0].pattern, "horizon");
   EXPECT_EQ(rules[0].size, 0.1);
@@ -41,7 +42,7 @@ TEST(SurfaceSizing, RulesAreReadFromCommasAndLinesAndBadOnesRefused) {
   EXPECT_EQ(rules[1].size, 0.05);
   EXPECT_EQ(rules[2].pattern, "F*");
   for (const char* bad : {"horizon", "=1", "a=-1", "a=0", "a=abc", "a=inf", "a=1x"})
-    EXPECT_THROW(parse_size_rules(bad), ParameterError) << bad;
+    EXPECT_THROW(parse_size_rules(bad, "--size"), ParameterError) << bad;
 }
 
 TEST(SurfaceSizing, NamedSurfaceGetsItsSizeAndTheOthersGradeAwayFromIt) {

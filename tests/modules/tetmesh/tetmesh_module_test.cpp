@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -35,6 +36,34 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
   ASSERT_EQ(report.at("regions").size(), 2u);
   EXPECT_NEAR(report.at("regions")[0].at("enclosed_volume").get<double>(), 0.5, 1e-12);
   EXPECT_FALSE(report.contains("output"));
+}
+
+TEST(TetmeshModule, RegionSizeBoundsTheNamedRegionAndReportsIt) {
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
+  context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(2, true)));
+  const std::string name = context.model->regions[1].name;
+  const double h = 0.2;  // a regular tet of edge h: volume h^3 / (6 sqrt 2)
+  module.run(context,
+             Parameters(module.parameters(), {{"region-size", name + "=" + std::to_string(h)}}));
+  const auto& regions = context.report.at("tetmesh").at("regions");
+  ASSERT_EQ(regions.size(), 2u);
+  const double bound = h * h * h / (6.0 * std::sqrt(2.0));
+  EXPECT_NEAR(regions[1].at("volume_bound").get<double>(), bound, 1e-12);
+  EXPECT_LE(regions[1].at("largest_tet").get<double>(), bound * (1 + 1e-9));
+  EXPECT_TRUE(regions[0].at("volume_bound").is_null());
+  EXPECT_GT(regions[0].at("largest_tet").get<double>(), bound);
+  // A name that is no region: an error listing the names there are.
+  try {
+    module.run(context, Parameters(module.parameters(), {{"region-size", "Reservoir=0.1"}}));
+    FAIL() << "an unknown region was accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(
+      module.run(context, Parameters(module.parameters(), {{"region-size", name + "=-1"}})),
+      ParameterError);
 }
 
 TEST(TetmeshModule, ReportsTheSurfaceBisectionAndRejectsItsBadOptions) {

@@ -90,6 +90,28 @@ TEST(TetgenSwitches, AreTheDocumentedString) {
   o.max_volume = 0;  // no quality refinement: no sliver threshold either
   EXPECT_EQ(tetgen_switches(o), "pAJQ");
   EXPECT_EQ(optimisation_threshold(o), 0.0);
+  o = TetmeshOptions{};
+  o.region_max_volume = {0.0, 0.02};  // region bounds: a bare `a`, and no sliver threshold
+  EXPECT_EQ(tetgen_switches(o), "pq1.5/10aAYJQ");
+  EXPECT_EQ(optimisation_threshold(o), 0.0);
+  o.max_volume = 0.5;
+  EXPECT_EQ(tetgen_switches(o), "pq1.5/10a0.5aAYJQ");
+}
+
+TEST(Tetrahedralize, VolumeBoundIsTheSmallerOfTheGlobalAndTheRegionOne) {
+  TetmeshOptions o;
+  EXPECT_FALSE(o.bounded());
+  EXPECT_EQ(o.volume_bound(0), 0.0);
+  o.region_max_volume = {0.0, 0.02, 0.5};
+  EXPECT_TRUE(o.bounded());
+  EXPECT_EQ(o.volume_bound(0), 0.0);
+  EXPECT_EQ(o.volume_bound(1), 0.02);
+  EXPECT_EQ(o.volume_bound(7), 0.0);  // a region past the list: no bound of its own
+  o.max_volume = 0.1;
+  EXPECT_EQ(o.volume_bound(0), 0.1);
+  EXPECT_EQ(o.volume_bound(1), 0.02);
+  EXPECT_EQ(o.volume_bound(2), 0.1);
+  EXPECT_EQ(o.volume_bound(-1), 0.1);
 }
 
 TEST(Tetrahedralize, BoxCutByHorizonGivesTwoConformalRegions) {
@@ -261,6 +283,31 @@ TEST(Tetrahedralize, MaxVolumeHoldsOnABundledModel) {
   options.max_volume = 1.5e6;  // the largest tet without a bound is about 4.2e6
   const VolumeMesh mesh = tetrahedralize(model, options, log);
   EXPECT_LE(largest_tet(mesh), options.max_volume * (1 + 1e-9));
+}
+
+TEST(Tetrahedralize, RegionBoundHoldsInItsRegionOnly) {
+  // One region bounded, with the surface kept: its tets are within the bound (size rounds
+  // bisect the surface where needed), the other region keeps its coarse tets.
+  const StructuralModel model = build_model(test::lattice_box(2, true));
+  ASSERT_EQ(model.regions.size(), 2u);
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.region_max_volume = {1e-3, 0.0};
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  double largest[2] = {0.0, 0.0};
+  for (size_t i = 0; i < mesh.tets.size(); ++i) {
+    const Tetrahedron& t = mesh.tets[i];
+    const double v = std::abs(tet_volume(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                         mesh.vertices[t[2]], mesh.vertices[t[3]]));
+    ASSERT_GE(mesh.tet_region[i], 0);
+    ASSERT_LT(mesh.tet_region[i], 2);
+    largest[mesh.tet_region[i]] = std::max(largest[mesh.tet_region[i]], v);
+  }
+  EXPECT_LE(largest[0], 1e-3 * (1 + 1e-9));
+  EXPECT_GT(largest[1], 1e-2);
+  const StructuralModel& meshed = run.refined_model ? *run.refined_model : model;
+  expect_valid_mesh(meshed, mesh);
 }
 
 /// A box holding two squares that cross each other along a vertical line.
