@@ -147,6 +147,23 @@ class ModuleTest(unittest.TestCase):
         # The caller's model is not changed.
         self.assertEqual(self.model.num_triangles, 6393)
 
+    def test_sizes_per_surface_and_region_are_keyword_parameters(self):
+        # Faults finer than the rest, then one region's tets finer: what a study sweeps.
+        ctx = voroseal.Context(self.model)
+        report = ctx.run("remesh", edge_length=400, size="kind:fault=200")
+        sizes = {s["name"]: s for s in report["sizes"]["surfaces"]}
+        self.assertEqual(sizes["F1"]["asked"], 200)  # the bundled model's one fault
+        self.assertAlmostEqual(sizes["F1"]["realised"], 200, delta=30)
+        self.assertGreater(sizes["H1"]["asked"], 300)
+        names = ctx.model.region_names
+        report = ctx.run("tetmesh", region_size=names[0] + "=300")
+        bound = 300 ** 3 / (6 * 2 ** 0.5)
+        self.assertAlmostEqual(report["regions"][0]["volume_bound"], bound)
+        self.assertLessEqual(report["regions"][0]["largest_tet"], bound * (1 + 1e-9))
+        self.assertIsNone(report["regions"][1]["volume_bound"])
+        with self.assertRaises(voroseal.ParameterError):
+            ctx.run("tetmesh", region_size="no_such_region=300")
+
     def test_progress_reaches_a_callback_step_by_step(self):
         events = []
         ctx = voroseal.Context(self.model, progress=events.append)
