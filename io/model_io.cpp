@@ -77,6 +77,8 @@ std::function<void(std::ostream&)> model_writer(const StructuralModel& model,
     write = [&model, precision](std::ostream& out) { write_obj(model, out, precision); };
   else if (ext == ".mesh")
     write = [&model, precision](std::ostream& out) { write_medit(model, out, precision); };
+  else if (ext == ".vtu" && options.ascii)
+    write = [&model, precision](std::ostream& out) { write_vtu_ascii(model, out, precision); };
   else if (ext == ".vtu")
     write = [&model, precision](std::ostream& out) { write_vtu(model, out, precision); };
   else if (ext == ".msh")
@@ -195,7 +197,9 @@ void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const Wr
     return;
   }
   std::function<void(std::ostream&)> write;
-  if (ext == ".vtu")
+  if (ext == ".vtu" && options.ascii)
+    write = [&](std::ostream& out) { write_vtu_volume_ascii(mesh, out, precision); };
+  else if (ext == ".vtu")
     write = [&](std::ostream& out) { write_vtu_volume(mesh, out, precision); };
   else if (ext == ".msh")
     write = [&](std::ostream& out) { write_msh_volume(mesh, out, precision); };

@@ -29,6 +29,7 @@ struct ReadOptions {
 struct WriteOptions {
   std::vector<std::string> protected_paths;  // never written over (compared as files)
   int precision = 17;                         // significant digits of coordinates
+  bool ascii = false;  // .vtu as ASCII text (else zlib-compressed binary); other formats are text
 };
 
 /// Reads the triangulated surfaces of a model file without inferring topology.

@@ -43,12 +43,16 @@ class ConvertModule : public Module {
     output.extensions = writable_model_extensions();
     for (const std::string& e : writable_volume_extensions())
       if (!contains(output.extensions, e)) output.extensions.push_back(e);
-    return {output};
+    ParameterSpec ascii{"ascii", ParameterType::Bool, false,
+                        "write .vtu as ASCII text rather than zlib-compressed binary (the other "
+                        "formats are text already)"};
+    return {output, ascii};
   }
   void run(Context& context, const Parameters& parameters) const override {
     const std::string out = parameters.get_string("output");
     const std::string ext = lower_extension(out);
-    const WriteOptions write{{context.input_path}};
+    WriteOptions write{{context.input_path}};
+    write.ascii = parameters.get_bool("ascii");
     if (context.volume && !context.model) {
       const VolumeMesh& mesh = *context.volume;
       if (!contains(writable_volume_extensions(), ext))

@@ -3,7 +3,10 @@
 // contact edges, corner points and names); a format that holds surfaces only is refused.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <string>
 
 #include "framework/model/model_builder.h"
 #include "io/model_io.h"
@@ -61,6 +64,30 @@ TEST_F(CliConvert, KeepsTetsRegionsSurfacesContactsAndCornersThroughEveryVolumeF
     EXPECT_EQ(back.edges.size(), mesh_.edges.size()) << chain[i];
     EXPECT_EQ(back.corners.size(), mesh_.corners.size()) << chain[i];
   }
+}
+
+// --ascii writes a .vtu whose arrays are all text, which reads back to the same mesh; without
+// it the arrays are compressed binary.
+TEST_F(CliConvert, AsciiVtuHoldsTextArraysAndReadsBackTheSame) {
+  const std::string text = dir_ / "ascii.vtu", binary = dir_ / "binary.vtu";
+  ASSERT_EQ(run_voroseal({"convert", source_, text, "--ascii"}).exit_code, 0);
+  ASSERT_EQ(run_voroseal({"convert", source_, binary}).exit_code, 0);
+  const auto arrays = [](const std::string& path, const std::string& format) {
+    std::ifstream in(path);
+    const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    long n = 0;
+    for (size_t at = all.find("format=\"" + format + "\""); at != std::string::npos;
+         at = all.find("format=\"" + format + "\"", at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_GT(arrays(text, "ascii"), 0);
+  EXPECT_EQ(arrays(text, "binary") + arrays(text, "appended"), 0);
+  EXPECT_EQ(arrays(binary, "ascii"), 0);
+  const VolumeMesh back = read_volume_mesh(text);
+  EXPECT_EQ(back.tets, read_volume_mesh(binary).tets);
+  EXPECT_EQ(tets_per_region(back), tets_per_region(mesh_));
+  EXPECT_EQ(back.region_names, mesh_.region_names);
 }
 
 TEST_F(CliConvert, TetGenFilesKeepTetsButRefuseContactsAndCorners) {
