@@ -20,13 +20,13 @@
 
 namespace voroseal {
 
-namespace {
-
-std::string extension(const std::string& path) {
+std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
+
+namespace {
 
 std::string list(const std::vector<std::string>& extensions) {
   std::string s;
@@ -46,14 +46,14 @@ void require_readable_extension(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, 0, "is a directory, not a model file");
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   const auto& readable = readable_model_extensions();
   if (std::find(readable.begin(), readable.end(), ext) == readable.end())
     throw InputError(path, 0, "unknown model file extension '" + ext + "' (supported: " + list(readable) + ")");
 }
 
 SurfaceSoup read_soup_source(const TextSource& source) {
-  const std::string ext = extension(source.name());
+  const std::string ext = file_extension(source.name());
   if (ext == ".ml") return read_model3d(source);
   if (ext == ".ts") return read_tsurf(source);
   if (ext == ".obj") return read_obj(source);
@@ -66,7 +66,7 @@ SurfaceSoup read_soup_source(const TextSource& source) {
 std::function<void(std::ostream&)> model_writer(const StructuralModel& model,
                                                 const std::string& path,
                                                 const WriteOptions& options) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   const int precision = options.precision;
   std::function<void(std::ostream&)> write;
   if (ext == ".ml")
@@ -126,7 +126,7 @@ VolumeMesh read_volume_mesh(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path, 0, "is a directory, not a volume mesh");
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (ext == ".mesh") {
     VolumeMesh mesh = read_medit_volume(load_text(path));
     // Names and kinds from the sidecar, when there is one (medit_names.h).
@@ -150,7 +150,7 @@ VolumeMesh read_volume_mesh(const std::string& path) {
 }
 
 std::optional<VolumeMesh> read_tets_if_any(const std::string& path) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (ext == ".node" || ext == ".ele" || ext == ".face") return read_volume_mesh(path);
   if (ext != ".mesh" && ext != ".vtu" && ext != ".msh") return std::nullopt;
   std::error_code ec;
@@ -164,7 +164,7 @@ std::optional<VolumeMesh> read_tets_if_any(const std::string& path) {
 }
 
 void write_volume_mesh(const VolumeMesh& mesh, const std::string& path, const WriteOptions& options) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   const int precision = options.precision;
   if (ext == ".node" || ext == ".ele") {
     // Three files: all are written to temporaries first, then renamed, so a failure while

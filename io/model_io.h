@@ -32,6 +32,9 @@ struct WriteOptions {
   bool ascii = false;  // .vtu as ASCII text (else zlib-compressed binary); other formats are text
 };
 
+/// The extension of `path` in lower case, with its dot (".vtu"); empty when none.
+std::string file_extension(const std::string& path);
+
 /// Reads the triangulated surfaces of a model file without inferring topology.
 /// \throws InputError
 SurfaceSoup read_soup(const std::string& path);

@@ -1,6 +1,8 @@
 #include "io/size_field_format.h"
 
 #include "framework/core/error.h"
+#include "io/model_io.h"
+#include "io/vtk_format.h"
 
 namespace voroseal {
 
@@ -23,7 +25,17 @@ SizeSamples read_size_field(const TextSource& source) {
 }
 
 SizeSamples read_size_field(const std::string& path) {
-  return read_size_field(load_text(path));
+  const std::string ext = file_extension(path);
+  if (ext != ".vtu") return read_size_field(load_text(path));
+  // A .vtu: its points, and the point data array of sizes.
+  VtuPointField field = read_vtu_point_field(load_text(path));
+  for (size_t i = 0; i < field.values.size(); ++i)
+    if (!(field.values[i] > 0.0))
+      throw InputError(path, field.line,
+                       "point data \"" + field.name + "\": the size at point " + std::to_string(i) +
+                           " must be positive, found " + std::to_string(field.values[i]));
+  if (field.points.empty()) throw InputError(path, 0, "a size field needs at least one point");
+  return {std::move(field.points), std::move(field.values)};
 }
 
 }  // namespace voroseal

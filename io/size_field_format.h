@@ -1,7 +1,9 @@
 // Size fields (`remesh --size-field FILE`): the edge lengths a user wants at points of space,
 // one point per line, `x y z h` in the model's file coordinates, blank-separated; blank lines
 // and lines starting with '#' are skipped. A well path sampled every few metres with the size
-// wanted around it, or a coarse grid of sizes, both read this way.
+// wanted around it, or a coarse grid of sizes, both read this way. A .vtu gives its points and
+// a scalar point data array of sizes (the only one, or the one named "size" or "h"), as
+// ParaView or meshio write a field sampled on a grid.
 #pragma once
 
 #include <string>
@@ -20,6 +22,7 @@ struct SizeSamples {
 /// \throws InputError (file:line) for a line that is not four finite numbers, a size that is
 ///         not positive, or a file without points.
 SizeSamples read_size_field(const TextSource& source);
+/// By the extension of `path`: .vtu as above, anything else as `x y z h` lines.
 SizeSamples read_size_field(const std::string& path);
 
 }  // namespace voroseal

@@ -205,6 +205,14 @@ struct VtuData {
     long line = 0;
   };
   std::vector<Name> names;
+  /// Scalar PointData arrays (one component), by name, with the line of their DataArray tag.
+  struct PointArray {
+    std::string name;
+    std::vector<double> values;
+    long line = 0;
+  };
+  std::vector<PointArray> point_data;
+  std::vector<std::string> other_point_data;  // PointData arrays of several components
 };
 
 // A DataArray the reader uses: its tag and, when inline, the text up to </DataArray>. Arrays
@@ -352,6 +360,10 @@ class VtuParser {
     if (section == "FieldData" && is_name_array(key)) {
       names_.emplace_back();
       return &names_.back();
+    }
+    if (section == "PointData") {
+      point_data_.emplace_back();
+      return &point_data_.back();
     }
     return nullptr;
   }
@@ -505,6 +517,19 @@ class VtuParser {
       const size_t colon = text.find(':');
       d_.names.push_back({text.substr(0, colon), text.substr(colon + 1), v[0], ref.line});
     }
+    for (const ArrayRef& ref : point_data_) {
+      const std::string* name = ref.tag.attribute("Name");
+      const std::string text = name ? xml_unescaped(*name) : "";
+      const std::string* components = ref.tag.attribute("NumberOfComponents");
+      if (components && *components != "1") {
+        d_.other_point_data.push_back(text);
+        continue;
+      }
+      d_.point_data.push_back({text, reals(ref, d_.points_declared, "point data"), ref.line});
+      if (static_cast<long long>(d_.point_data.back().values.size()) != d_.points_declared)
+        throw InputError(name_, ref.line,
+                         "point data \"" + text + "\" must have one value per point");
+    }
     d_.connectivity =
         integers(connectivity_, d_.offsets.empty() ? 0 : d_.offsets.back(), "connectivity");
     d_.connectivity_line = connectivity_.line;
@@ -555,6 +580,7 @@ class VtuParser {
   BinaryLayout layout_;
   ArrayRef points_, connectivity_, offsets_, types_, surface_, region_, part_, contact_, corner_;
   std::list<ArrayRef> names_;  // FieldData names (stable addresses while they are filled)
+  std::list<ArrayRef> point_data_;  // PointData arrays, the same way
   VtuData d_;
 };
 
@@ -924,6 +950,28 @@ VolumeMesh read_vtu_volume(const TextSource& source) {
   apply_field_names(d, source.name(), mesh);
   validate_volume_mesh(mesh, source.name());
   return mesh;
+}
+
+VtuPointField read_vtu_point_field(const TextSource& source, const std::string& wanted) {
+  const VtuData d = VtuParser(source).parse();
+  const VtuData::PointArray* field = nullptr;
+  for (const VtuData::PointArray& a : d.point_data)
+    if (a.name == wanted || (wanted.empty() && d.point_data.size() == 1)) field = &a;
+  for (const char* name : {"size", "h"})
+    for (const VtuData::PointArray& a : d.point_data)
+      if (!field && wanted.empty() && a.name == name) field = &a;
+  if (!field) {
+    std::string names;
+    for (const VtuData::PointArray& a : d.point_data) names += (names.empty() ? "" : ", ") + a.name;
+    for (const std::string& n : d.other_point_data)
+      names += (names.empty() ? "" : ", ") + n + " (not scalar)";
+    throw InputError(source.name(), d.piece_line,
+                     (wanted.empty() ? std::string("no scalar point data array to read (the only "
+                                                   "one, or one named size or h)")
+                                     : "no scalar point data array named \"" + wanted + "\"") +
+                         "; the file has " + (names.empty() ? "none" : names));
+  }
+  return {d.points, field->values, field->name, field->line};
 }
 
 void write_vtu(const StructuralModel& model, std::ostream& out, int precision) {

@@ -16,10 +16,13 @@
 // vtkZLibDataCompressor; types Int8..UInt64, Float32, Float64; LittleEndian only. Triangles,
 // quads (split), polygons (fan) and tets; in volume meshes lines and vertices (as contact edges
 // and corners; ignored in models); poly-lines and poly-vertices ignored, other cells refused.
-// FieldData names of the form above name the ids; other FieldData is skipped.
+// FieldData names of the form above name the ids; other FieldData is skipped. Scalar PointData
+// arrays are read by read_vtu_point_field() (a size field), and skipped by the other readers.
 #pragma once
 
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "framework/model/structural_model.h"
 #include "framework/model/surface_soup.h"
@@ -32,6 +35,18 @@ namespace voroseal {
 SurfaceSoup read_vtu(const TextSource& source);
 /// \throws InputError
 VolumeMesh read_vtu_volume(const TextSource& source);
+
+/// The points of a .vtu and one scalar PointData array on them (file coordinates; cells, if
+/// any, are read and checked but not returned).
+struct VtuPointField {
+  std::vector<Vec3> points;
+  std::vector<double> values;
+  std::string name;
+  long line = 0;  // of the array's DataArray tag
+};
+/// The array named `name`; with an empty name the file's only scalar point array, else the one
+/// named "size" or "h". \throws InputError (file:line) naming the arrays the file has.
+VtuPointField read_vtu_point_field(const TextSource& source, const std::string& name = "");
 
 /// Zlib-compressed binary DataArrays (coordinates exact: `precision` is not used).
 void write_vtu(const StructuralModel& model, std::ostream& out, int precision);

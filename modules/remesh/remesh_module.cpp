@@ -260,8 +260,9 @@ class RemeshModule final : public Module {
     p.push_back(size);
     p.push_back(spec("size-field", ParameterType::Path, nullptr,
                      "target edge lengths at points, a file of 'x y z h' lines (file "
-                     "coordinates): h at the points, graded away from them; the smallest size "
-                     "wins"));
+                     "coordinates) or a .vtu with a scalar point data array of sizes (the "
+                     "only one, or size or h): h at the points, graded away from them; the "
+                     "smallest size wins"));
     p.push_back(spec("gradation", ParameterType::Double, SeedOptions{}.gradation,
                      "with --size or --size-field: sizes change by at most this factor between "
                      "neighbouring cells",
