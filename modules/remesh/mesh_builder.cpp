@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "framework/core/sorted_key_map.h"
 #include "framework/core/union_find.h"
 #include "framework/geometry/triangle_quality.h"
 
@@ -161,7 +162,7 @@ class MeshBuilder {
         const int next = poly.first + (k + 1 == poly.size ? 0 : k + 1);
         if (tag.on_input_edge() && !tag.on_line()) {
           // Glued inside the component to the same segment, reversed, in the next triangle.
-          if (gid_[m] != gid_[next]) glued_at_.emplace(key2(gid_[m], gid_[next]), m);
+          if (gid_[m] != gid_[next]) glued_at_.add(key2(gid_[m], gid_[next]), m);
           continue;
         }
         BoundaryEdge e;
@@ -175,10 +176,12 @@ class MeshBuilder {
         e.contact = tag.contact;
         e.length = (rvd_.vertex[next] - rvd_.vertex[poly.first + k]).norm();
         cc.boundary.push_back(static_cast<int>(edges_.size()));
-        if (tag.on_bisector()) edge_at_.emplace(key2(e.from, e.to), static_cast<int>(edges_.size()));
+        if (tag.on_bisector()) edge_at_.add(key2(e.from, e.to), static_cast<int>(edges_.size()));
         edges_.push_back(e);
       }
     }
+    glued_at_.seal();
+    edge_at_.seal();
   }
 
   // ---- connected components of each cell's restriction to the contacts ----
@@ -336,9 +339,9 @@ class MeshBuilder {
         k = after;
         continue;
       }
-      auto twin = glued_at_.find(key2(gid_[after], gid_[k]));
-      if (twin == glued_at_.end()) return -1;
-      k = next_corner(twin->second);
+      const int* twin = glued_at_.find(key2(gid_[after], gid_[k]));
+      if (twin == nullptr) return -1;
+      k = next_corner(*twin);
     }
     return -1;
   }
@@ -512,12 +515,12 @@ class MeshBuilder {
     // Split edges of components with two contact points.
     for (const BoundaryEdge& e : edges_) {
       if (e.neighbour < 0 || find(e.rep_start) == find(e.rep_end)) continue;
-      auto it = edge_at_.find(key2(e.to, e.from));
-      if (it == edge_at_.end()) {
+      const int* at = edge_at_.find(key2(e.to, e.from));
+      if (at == nullptr) {
         ++result_.inconsistencies;
         continue;
       }
-      const BoundaryEdge& twin = edges_[it->second];
+      const BoundaryEdge& twin = edges_[*at];
       const int seed = components_[e.component].seed;
       const bool twin_split = find(twin.rep_start) != find(twin.rep_end);
       if (twin_split && seed > e.neighbour) continue;  // listed from the twin's side
@@ -573,8 +576,8 @@ class MeshBuilder {
   std::vector<int> gid_;                       // per diagram polygon vertex
   std::vector<CellComponent> components_;
   std::vector<BoundaryEdge> edges_;
-  std::unordered_map<std::uint64_t, int> edge_at_;                // (from, to) -> bisector edge
-  std::unordered_map<std::uint64_t, int> glued_at_;               // (from, to) -> glued polygon edge
+  SortedKeyMap edge_at_;   // (from, to) -> bisector edge
+  SortedKeyMap glued_at_;  // (from, to) -> glued polygon edge
   std::vector<int> polygon_of_;                                   // polygon of each polygon vertex
   std::vector<int> boundary_at_;                                  // boundary edge starting there
   std::vector<ContactComponent> contact_components_;
