@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <type_traits>
 #include <unordered_map>
 
 #include "framework/core/union_find.h"
@@ -172,28 +173,32 @@ RestrictedVoronoiDiagram compute_restricted_voronoi_diagram(const ModelGeometry&
     return x.seed != y.seed ? x.seed < y.seed : x.triangle < y.triangle;
   });
   rvd.polygons.reserve(refs.size());
-  rvd.vertex.reserve(nverts);
-  rvd.vertex_tag.reserve(nverts);
-  rvd.edge_tag.reserve(nverts);
   rvd.seed_polygons.assign(n + 1, 0);
-  for (const Ref& r : refs) {
-    const CollectVisitor& v = visitors[r.thread];
-    RvdPolygon p = v.polygons[r.index];
-    const int from = p.first;
-    p.first = static_cast<int>(rvd.vertex.size());
-    rvd.vertex.insert(rvd.vertex.end(), v.vertex.begin() + from, v.vertex.begin() + from + p.size);
-    rvd.vertex_tag.insert(rvd.vertex_tag.end(), v.vertex_tag.begin() + from, v.vertex_tag.begin() + from + p.size);
-    rvd.edge_tag.insert(rvd.edge_tag.end(), v.edge_tag.begin() + from, v.edge_tag.begin() + from + p.size);
+  std::vector<int> from(refs.size());  // first vertex of each polygon in its thread's arrays
+  int first = 0;
+  for (size_t i = 0; i < refs.size(); ++i) {
+    RvdPolygon p = visitors[refs[i].thread].polygons[refs[i].index];
+    from[i] = p.first;
+    p.first = first;
+    first += p.size;
     rvd.polygons.push_back(p);
     ++rvd.seed_polygons[p.seed + 1];
   }
   for (int i = 0; i < n; ++i) rvd.seed_polygons[i + 1] += rvd.seed_polygons[i];
-  for (CollectVisitor& v : visitors) {
-    std::vector<RvdPolygon>().swap(v.polygons);
-    std::vector<Vec3>().swap(v.vertex);
-    std::vector<RvdVertexTag>().swap(v.vertex_tag);
-    std::vector<RvdEdgeTag>().swap(v.edge_tag);
-  }
+  // One vertex array at a time, each thread's copy freed once gathered: the diagram is never
+  // held twice over.
+  for (CollectVisitor& v : visitors) std::vector<RvdPolygon>().swap(v.polygons);
+  auto gather = [&](auto& out, auto member) {
+    out.reserve(nverts);
+    for (size_t i = 0; i < refs.size(); ++i) {
+      const auto& in = visitors[refs[i].thread].*member;
+      out.insert(out.end(), in.begin() + from[i], in.begin() + from[i] + rvd.polygons[i].size);
+    }
+    for (CollectVisitor& v : visitors) std::decay_t<decltype(out)>().swap(v.*member);
+  };
+  gather(rvd.vertex, &CollectVisitor::vertex);
+  gather(rvd.vertex_tag, &CollectVisitor::vertex_tag);
+  gather(rvd.edge_tag, &CollectVisitor::edge_tag);
 
   // Contact segments.
   for (const CollectVisitor& v : visitors)
