@@ -139,6 +139,8 @@ def main():
         with open(a.json, "w") as f:
             json.dump(rows, f, indent=1)
     print_table(rows)
+    print()
+    print_memory_table(rows)
     print_fits(rows, densities)
     if a.png:
         draw(rows, densities, a.png)
@@ -156,6 +158,20 @@ def print_table(rows):
                  r.get("mesh_building_s"), r.get("cleanup_s"), r.get("tetmesh_s"),
                  f"{r.get('stop_reason')} ({r.get('iterations')})", r.get("valid")]
         cells = [f"{c:.1f}" if isinstance(c, float) else str(c) for c in cells]
+        print("| " + " | ".join(cells) + " |")
+
+
+def print_memory_table(rows):
+    """Per phase of the remesh: the memory it still holds at its end and the peak so far (MB);
+    a phase whose peak is above the one before set it."""
+    head = ["scenario", "res", "seeds"] + [p.replace("_", " ") + " (held / peak)" for p in PHASES]
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for r in rows:
+        cells = [r["scenario"], str(r["res"]), f"{r['seeds']:,}"]
+        for p in PHASES:
+            held, peak = r.get(p + "_resident_mb"), r.get(p + "_peak_mb")
+            cells.append("-" if held is None else f"{held:.0f} / {peak:.0f}")
         print("| " + " | ".join(cells) + " |")
 
 
