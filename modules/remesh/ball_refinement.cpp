@@ -7,8 +7,8 @@
 #include <random>
 #include <set>
 
-#include "modules/remesh/size_field.h"
-#include "modules/remesh/point_cloud.h"
+#include "framework/geometry/point_cloud.h"
+#include "framework/geometry/size_field.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_sampling.h"
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "framework/core/error.h"
+#include "framework/geometry/point_cloud.h"
 #include "framework/model/contact_wedges.h"
 #include "modules/remesh/contact_arcs.h"
-#include "modules/remesh/point_cloud.h"
 #include "modules/remesh/triangle_grid.h"
 
 namespace voroseal {

@@ -12,13 +12,13 @@
 
 #include <memory>
 
+#include "framework/geometry/size_field.h"
 #include "framework/host/progress.h"
 #include "framework/model/structural_model.h"
 #include "modules/remesh/cleanup_report.h"
 #include "modules/remesh/cleanup_thresholds.h"
 #include "modules/remesh/mesh_builder.h"
 #include "modules/remesh/remeshed_surface.h"
-#include "modules/remesh/size_field.h"
 #include "modules/remesh/surface_projection.h"
 
 namespace voroseal {

@@ -9,7 +9,7 @@
 #include <limits>
 #include <nanoflann.hpp>
 
-#include "modules/remesh/point_cloud.h"
+#include "framework/geometry/point_cloud.h"
 
 namespace voroseal {
 

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "framework/geometry/size_field.h"
 #include "framework/model/size_rules.h"
 #include "framework/model/structural_model.h"
-#include "modules/remesh/size_field.h"
 
 namespace voroseal {
 

@@ -177,7 +177,7 @@ int run_tetgen(const std::string& switches, tetgenio& in, tetgenio& out, std::st
   buffer.push_back('\0');
   tetgenbehavior behavior;
   StdoutCapture capture;  // the child inherits the redirected stdout
-  if (!behavior.parse_commandline(buffer.data()) || behavior.refine || behavior.metric || behavior.insertaddpoints ||
+  if (!behavior.parse_commandline(buffer.data()) || behavior.refine || behavior.insertaddpoints ||
       behavior.coarsen || behavior.order == 2) {
     printed = capture.finish();
     return 10;

@@ -15,6 +15,7 @@
 #include "framework/model/contact_wedges.h"
 #include "framework/model/size_rules.h"
 #include "io/model_io.h"
+#include "io/size_field_format.h"
 #include "modules/tetmesh/tetrahedralize.h"
 
 namespace voroseal {
@@ -118,6 +119,20 @@ class TetmeshModule : public Module {
         "region or layer name (globs); a volume bound H^3/(6 sqrt 2) there (a regular tet of "
         "edge H), the smaller where --max-volume also holds"};
     region_size.repeatable = true;
+    ParameterSpec surface_sizes{
+        "surface-sizes", ParameterType::Bool, false,
+        "tets inside the regions about as large as the surface triangles around them (TetGen's "
+        "point sizes, switch m: the mean surface edge at each surface vertex)"};
+    ParameterSpec size_field{
+        "size-field", ParameterType::Path, nullptr,
+        "tet edge lengths at points, a file of 'x y z h' lines or a .vtu point field (as "
+        "remesh --size-field), graded away from the points by --gradation; the smaller where "
+        "--surface-sizes also holds"};
+    ParameterSpec gradation{"gradation", ParameterType::Double, 1.3,
+                            "with --size-field: sizes grow by at most this factor per size of "
+                            "distance from the field's points"};
+    gradation.min = 1.01;
+    gradation.max = 10.0;
     ParameterSpec keep{"keep-surface", ParameterType::Bool, true,
                        "TetGen adds no point on the surfaces (switch Y): tets conformal to the surface triangles "
                        "(bisected only by --refine-surface-below)"};
@@ -149,8 +164,8 @@ class TetmeshModule : public Module {
         "triangle); the command fails when the bound still does not hold"};
     size.min = 0;
     size.max = kMaxSizeRounds;
-    return {output,  quality,  dihedral, volume, region_size, keep,
-            slivers, optimise, refine,   rounds, size};
+    return {output,    quality, dihedral, volume,   region_size, surface_sizes, size_field,
+            gradation, keep,    slivers,  optimise, refine,      rounds,        size};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -163,6 +178,14 @@ class TetmeshModule : public Module {
     if (parameters.has("region-size"))
       options.region_max_volume = region_volume_bounds(
           model, parse_size_rules(parameters.get_string("region-size"), "--region-size"));
+    options.surface_sizes = parameters.get_bool("surface-sizes");
+    options.gradation = parameters.get_double("gradation");
+    if (parameters.has("size-field")) {
+      SizeSamples samples = read_size_field(parameters.get_string("size-field"));
+      for (Vec3& p : samples.points) p -= model.frame.origin;  // to the model's local frame
+      options.size_field =
+          std::make_shared<const SizeField>(std::move(samples.points), std::move(samples.sizes));
+    }
     if (options.bounded()) {
       // Refused before TetGen starts: a tiny bound would run for hours towards billions of tets.
       const double tets = kTetsPerBoundVolume * bounded_tets(model, options);

@@ -31,6 +31,9 @@ namespace {
 
 // Relative rounding slack on --max-volume when the mesh is checked against it.
 constexpr double kVolumeBoundSlack = 1e-9;
+// TetGen's point sizes (switch m) bound the circumradius of the tets at a point; a regular tet
+// of edge H has circumradius H √6 / 4.
+const double kCircumradiusPerEdge = std::sqrt(6.0) / 4.0;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -640,6 +643,7 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
   // A bare `a` (no number next) applies the bounds of the region list.
   const auto& regions = options.region_max_volume;
   if (std::any_of(regions.begin(), regions.end(), [](double v) { return v > 0.0; })) s += "a";
+  if (options.sized()) s += "m";
   if (optimisation_threshold(options) > 0.0) s += "o/" + number(options.sliver_max_dihedral_deg);
   s += "A";
   if (options.keep_surface) s += "Y";
@@ -650,6 +654,36 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
 
 namespace {
 
+/// TetGen's size at every PLC point (options.sized()): the circumradius it refines tets to,
+/// kCircumradiusPerEdge × the edge length wanted there (the surface's mean edge at the vertex,
+/// the size field's size, the smaller of both).
+std::vector<double> point_sizes(const StructuralModel& model, const PlcMap& map,
+                                const TetmeshOptions& options) {
+  std::vector<double> edge(model.vertices.size(), std::numeric_limits<double>::infinity());
+  if (options.surface_sizes) {
+    std::vector<double> sum(model.vertices.size(), 0.0);
+    std::vector<int> count(model.vertices.size(), 0);
+    for (const Triangle& t : flatten(model).triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        const double length = (model.vertices[a] - model.vertices[b]).norm();
+        sum[a] += length, sum[b] += length;
+        ++count[a], ++count[b];
+      }
+    for (size_t v = 0; v < edge.size(); ++v)
+      if (count[v] > 0) edge[v] = sum[v] / count[v];
+  }
+  std::vector<double> sizes(map.point_vertex.size(), 0.0);
+  for (size_t p = 0; p < sizes.size(); ++p) {
+    const int v = map.point_vertex[p];
+    double h = edge[v];
+    if (options.size_field)
+      h = std::min(h, options.size_field->size_at(model.vertices[v], options.gradation - 1.0));
+    sizes[p] = std::isfinite(h) ? kCircumradiusPerEdge * h : 0.0;
+  }
+  return sizes;
+}
+
 /// One tet mesh of `model`: TetGen (in more facet orders when needed), then the sliver passes.
 /// Fills `info` except the census and the surface bisection figures.
 ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
@@ -659,6 +693,18 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   PlcMap map = build_plc(model, in, options.region_max_volume);
   const int plc_points = in.numberofpoints;
   const std::vector<REAL> plc_coordinates(in.pointlist, in.pointlist + 3 * plc_points);
+  // Point sizes (switch m): one per point; the sliver points added below get none (0).
+  const std::vector<double> plc_sizes =
+      options.sized() ? point_sizes(model, map, options) : std::vector<double>{};
+  auto set_point_sizes = [&]() {
+    if (plc_sizes.empty()) return;
+    delete[] in.pointmtrlist;
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[in.numberofpoints];
+    std::fill(in.pointmtrlist, in.pointmtrlist + in.numberofpoints, 0.0);
+    std::copy(plc_sizes.begin(), plc_sizes.end(), in.pointmtrlist);
+  };
+  set_point_sizes();
   info.plc_seconds = seconds_since(start);
   info.region_points = map.region_points;
   info.input_points = plc_points;
@@ -772,6 +818,7 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
     std::copy(plc_coordinates.begin(), plc_coordinates.end(), in.pointlist);
     for (size_t e = 0; e < trial.size(); ++e)
       for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = trial[e][d];
+    set_point_sizes();
     tetgenio out;
     std::string printed;
     const int code = tetgen(out, printed, "sliver pass " + std::to_string(pass));
@@ -967,6 +1014,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     throw ParameterError("minimum dihedral angle " + number(options.min_dihedral_deg) + " out of range [0, 70)");
   if (!(options.max_volume >= 0.0 && std::isfinite(options.max_volume)))
     throw ParameterError("maximum tet volume " + number(options.max_volume) + " must be finite and >= 0");
+  if (options.size_field && !(options.gradation > 1.0 && std::isfinite(options.gradation)))
+    throw ParameterError("gradation " + number(options.gradation) + " must be finite and > 1");
   for (double v : options.region_max_volume)
     if (!(v >= 0.0 && std::isfinite(v)))
       throw ParameterError("maximum tet volume " + number(v) +

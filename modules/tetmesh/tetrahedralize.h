@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/geometry/size_field.h"
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
 #include "framework/model/volume_mesh.h"
@@ -30,6 +31,17 @@ struct TetmeshOptions {
   /// `a` with the bound in the region list); 0 or absent = none. Where both hold, the smaller.
   std::vector<double> region_max_volume;
 
+  /// Tet sizes that follow the surfaces (TetGen's point sizes, switch `m`): at every surface
+  /// vertex the mean length of its surface edges, so that tets inside a region are about as
+  /// large as the triangles around them rather than growing away from them.
+  bool surface_sizes = false;
+  /// Sizes asked at points of space (`--size-field`), graded by `gradation` away from them; at
+  /// a surface vertex the smaller of this and its surface size (when surface_sizes).
+  std::shared_ptr<const SizeField> size_field;
+  double gradation = 1.3;
+
+  /// True when TetGen gets point sizes (switch `m`).
+  bool sized() const { return surface_sizes || size_field != nullptr; }
   /// The volume bound of region r (0: none).
   double volume_bound(int region) const;
   /// True when some tet has a volume bound.

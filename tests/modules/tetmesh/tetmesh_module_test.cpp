@@ -66,6 +66,36 @@ TEST(TetmeshModule, RegionSizeBoundsTheNamedRegionAndReportsIt) {
       ParameterError);
 }
 
+TEST(TetmeshModule, SurfaceSizesAndSizeFieldReachTetGen) {
+  test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
+  const Module& module = harness.module;
+  Context& context = harness.context;
+  context.model = std::make_shared<StructuralModel>(build_model(test::lattice_box(4, true)));
+  module.run(context, Parameters(module.parameters(), {}));
+  const long plain = context.report.at("tetmesh").at("tets").get<long>();
+  module.run(context, Parameters(module.parameters(), {{"surface-sizes", true}}));
+  EXPECT_NE(context.report.at("tetmesh").at("switches").get<std::string>().find('m'),
+            std::string::npos);
+  EXPECT_GT(context.report.at("tetmesh").at("tets").get<long>(), plain);
+  // A size field file (file coordinates): finer again near its point.
+  const std::string field = ::testing::TempDir() + "tetmesh_size_field.xyz";
+  {
+    std::FILE* f = std::fopen(field.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f, "0.5 0.5 0.5 0.05\n");
+    std::fclose(f);
+  }
+  module.run(context, Parameters(module.parameters(), {{"size-field", field}}));
+  EXPECT_GT(context.report.at("tetmesh").at("tets").get<long>(), plain);
+  EXPECT_THROW(
+      module.run(context, Parameters(module.parameters(), {{"size-field", field + ".missing"}})),
+      InputError);
+  EXPECT_THROW(module.run(context, Parameters(module.parameters(),
+                                              {{"size-field", field}, {"gradation", 1.0}})),
+               ParameterError);
+  std::remove(field.c_str());
+}
+
 TEST(TetmeshModule, ReportsTheSurfaceBisectionAndRejectsItsBadOptions) {
   // A layer 0.02 thick under 0.125 triangles: the report counts the bisected edges and checks
   // conformity against the triangles TetGen got; options out of range are parameter errors.

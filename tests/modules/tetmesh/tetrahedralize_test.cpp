@@ -96,6 +96,9 @@ TEST(TetgenSwitches, AreTheDocumentedString) {
   EXPECT_EQ(optimisation_threshold(o), 0.0);
   o.max_volume = 0.5;
   EXPECT_EQ(tetgen_switches(o), "pq1.5/10a0.5aAYJQ");
+  o = TetmeshOptions{};
+  o.surface_sizes = true;  // point sizes: switch m
+  EXPECT_EQ(tetgen_switches(o), "pq1.5/10mo/150AYJQ");
 }
 
 TEST(Tetrahedralize, VolumeBoundIsTheSmallerOfTheGlobalAndTheRegionOne) {
@@ -308,6 +311,66 @@ TEST(Tetrahedralize, RegionBoundHoldsInItsRegionOnly) {
   EXPECT_GT(largest[1], 1e-2);
   const StructuralModel& meshed = run.refined_model ? *run.refined_model : model;
   expect_valid_mesh(meshed, mesh);
+}
+
+/// Mean edge length of the tets whose centroid `inside` accepts.
+template <class Inside>
+double mean_tet_edge(const VolumeMesh& mesh, Inside inside) {
+  double sum = 0.0;
+  long count = 0;
+  for (const Tetrahedron& t : mesh.tets) {
+    const Vec3 c =
+        (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]] + mesh.vertices[t[3]]) /
+        4.0;
+    if (!inside(c)) continue;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        sum += (mesh.vertices[t[i]] - mesh.vertices[t[j]]).norm(), ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+TEST(Tetrahedralize, SurfaceSizesKeepTheTetsAsSmallAsTheTrianglesAround) {
+  // Fine surfaces (edges 1/8) around two large regions: without sizes TetGen's tets grow away
+  // from the surfaces; with the surface sizes they stay about as long as the triangles' edges.
+  const StructuralModel model = build_model(test::lattice_box(8, true));
+  Logger log = quiet_logger();
+  const auto anywhere = [](const Vec3&) { return true; };
+  const VolumeMesh plain = tetrahedralize(model, TetmeshOptions{}, log);
+  TetmeshOptions options;
+  options.surface_sizes = true;
+  TetmeshRun run;
+  const VolumeMesh sized = tetrahedralize(model, options, log, &run);
+  EXPECT_NE(run.switches.find('m'), std::string::npos);
+  expect_valid_mesh(model, sized);
+  double surface = 0.0;
+  for (const Triangle& t : flatten(model).triangles)
+    for (int k = 0; k < 3; ++k)
+      surface += (model.vertices[t[k]] - model.vertices[t[(k + 1) % 3]]).norm();
+  surface /= 3.0 * model.num_triangles();
+  EXPECT_GT(sized.tets.size(), plain.tets.size());
+  EXPECT_LT(mean_tet_edge(sized, anywhere), mean_tet_edge(plain, anywhere));
+  EXPECT_LT(mean_tet_edge(sized, anywhere), 1.2 * surface);
+}
+
+TEST(Tetrahedralize, SizeFieldMakesTheTetsFinerNearItsPoints) {
+  // A field of one point at the box's centre asking for 1/20: the tets near it are much finer
+  // than those far from it, and the mesh is still valid.
+  const StructuralModel model = build_model(test::lattice_box(8, true));
+  Logger log = quiet_logger();
+  const Vec3 centre = model.bbox().center();
+  TetmeshOptions options;
+  options.size_field =
+      std::make_shared<const SizeField>(std::vector<Vec3>{centre}, std::vector<double>{0.05});
+  const VolumeMesh mesh = tetrahedralize(model, options, log);
+  expect_valid_mesh(model, mesh);
+  const double near =
+      mean_tet_edge(mesh, [&](const Vec3& c) { return (c - centre).norm() < 0.15; });
+  const double far = mean_tet_edge(mesh, [&](const Vec3& c) { return (c - centre).norm() > 0.45; });
+  EXPECT_GT(near, 0.0);
+  EXPECT_LT(near, 0.6 * far);
+  options.gradation = 1.0;  // sizes that do not grow: refused
+  EXPECT_THROW(tetrahedralize(model, options, log), ParameterError);
 }
 
 /// A box holding two squares that cross each other along a vertical line.

@@ -22,7 +22,8 @@ struct PointCloud {
   }
 };
 
-using PointKdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud,
-                                                        3, std::uint32_t>;
+using PointKdTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
+                                        PointCloud, 3, std::uint32_t>;
 
 }  // namespace voroseal

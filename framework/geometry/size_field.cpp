@@ -1,11 +1,11 @@
-#include "modules/remesh/size_field.h"
+#include "framework/geometry/size_field.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "framework/core/error.h"
-#include "modules/remesh/point_cloud.h"
+#include "framework/geometry/point_cloud.h"
 
 namespace voroseal {
 
