@@ -143,7 +143,8 @@ class MeshBuilder {
     const std::vector<int> component = restricted_cell_components(rvd_, &count);
     components_.resize(count);
     result_.cell_components = count;
-    // At most one key per polygon edge of each kind: reserved, so the maps never reallocate.
+    // At most one key per polygon edge of each kind: reserved, so the maps (and the boundary
+    // edges) never reallocate.
     size_t glued = 0, bisector = 0;
     for (const RvdEdgeTag& tag : rvd_.edge_tag) {
       glued += tag.on_input_edge() && !tag.on_line();
@@ -151,6 +152,7 @@ class MeshBuilder {
     }
     glued_at_.reserve(glued);
     edge_at_.reserve(bisector);
+    edges_.reserve(rvd_.edge_tag.size() - glued);  // every other polygon edge at the most
     for (size_t p = 0; p < rvd_.polygons.size(); ++p) {
       const RvdPolygon& poly = rvd_.polygons[p];
       CellComponent& cc = components_[component[p]];
