@@ -38,4 +38,10 @@ SizeSamples read_size_field(const std::string& path) {
   return {std::move(field.points), std::move(field.values)};
 }
 
+std::shared_ptr<const SizeField> load_size_field(const std::string& path, const Vec3& origin) {
+  SizeSamples samples = read_size_field(path);
+  for (Vec3& p : samples.points) p -= origin;
+  return std::make_shared<const SizeField>(std::move(samples.points), std::move(samples.sizes));
+}
+
 }  // namespace voroseal

@@ -6,10 +6,12 @@
 // ParaView or meshio write a field sampled on a grid.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "framework/core/types.h"
+#include "framework/geometry/size_field.h"
 #include "io/line_reader.h"
 
 namespace voroseal {
@@ -24,5 +26,9 @@ struct SizeSamples {
 SizeSamples read_size_field(const TextSource& source);
 /// By the extension of `path`: .vtu as above, anything else as `x y z h` lines.
 SizeSamples read_size_field(const std::string& path);
+
+/// The size field of `path` (read_size_field), its points moved to the model's local frame
+/// (file coordinates − `origin`), as remesh and tetmesh take it. \throws InputError
+std::shared_ptr<const SizeField> load_size_field(const std::string& path, const Vec3& origin);
 
 }  // namespace voroseal

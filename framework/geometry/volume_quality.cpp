@@ -133,6 +133,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   for (int r : mesh.tet_region) max_region = std::max(max_region, r);
   q.region_volume.assign(max_region + 1, 0.0);
   q.region_tets.assign(max_region + 1, 0);
+  q.region_max_volume.assign(max_region + 1, 0.0);
 
   double min_dihedral = 180.0, max_dihedral = 0.0, max_ratio = 0.0, sum_ratio = 0.0;
   double min_volume = std::numeric_limits<double>::infinity(), max_volume = 0.0;
@@ -142,6 +143,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   {
     std::vector<double> region_volume(q.region_volume.size(), 0.0);
     std::vector<long> region_tets(q.region_tets.size(), 0);
+    std::vector<double> region_max_volume(q.region_tets.size(), 0.0);
     double local_min_dihedral = 180.0, local_max_dihedral = 0.0, local_max_ratio = 0.0, local_sum_ratio = 0.0;
     double local_min_volume = std::numeric_limits<double>::infinity(), local_max_volume = 0.0;
     long local_nonpositive = 0, local_repeated = 0;
@@ -170,6 +172,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       if (r >= 0) {
         region_volume[r] += volume;
         ++region_tets[r];
+        region_max_volume[r] = std::max(region_max_volume[r], volume);
       }
     }
 #pragma omp critical(voroseal_measure_volume)
@@ -185,6 +188,7 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
       for (size_t r = 0; r < region_volume.size(); ++r) {
         q.region_volume[r] += region_volume[r];
         q.region_tets[r] += region_tets[r];
+        q.region_max_volume[r] = std::max(q.region_max_volume[r], region_max_volume[r]);
       }
     }
   }

@@ -29,6 +29,7 @@ struct VolumeQuality {
   /// Sum of tet volumes per region id (index = id, sized to the largest id + 1).
   std::vector<double> region_volume;
   std::vector<long> region_tets;
+  std::vector<double> region_max_volume;  // largest signed tet volume per region id
   /// Triangles of mesh.triangles that are not a face of any tet.
   long nonconforming_triangles = 0;
 };

@@ -60,14 +60,18 @@ std::vector<int> regions_named(const StructuralModel& model, const std::string& 
   return regions;
 }
 
-std::string region_and_layer_names(const StructuralModel& model) {
+std::string names_for_message(const std::vector<std::string>& names) {
   std::string s;
-  auto add = [&](const std::string& n) {
+  for (const std::string& n : names)
     if (s.size() < kNamesInMessage) s += (s.empty() ? "" : ", ") + n;
-  };
-  for (const Region& r : model.regions) add(r.name);
-  for (const Layer& l : model.layers) add(l.name);
   return s.size() >= kNamesInMessage ? s + ", ..." : s;
+}
+
+std::string region_and_layer_names(const StructuralModel& model) {
+  std::vector<std::string> names;
+  for (const Region& r : model.regions) names.push_back(r.name);
+  for (const Layer& l : model.layers) names.push_back(l.name);
+  return names_for_message(names);
 }
 
 }  // namespace voroseal

@@ -27,6 +27,9 @@ bool name_matches(const std::string& pattern, const std::string& name, bool fold
 /// The regions `pattern` names: by region name, or every region of a layer it names. Sorted.
 std::vector<int> regions_named(const StructuralModel& model, const std::string& pattern);
 
+/// "a, b, c, ...": names for a message, cut after about 400 characters.
+std::string names_for_message(const std::vector<std::string>& names);
+
 /// "Region_1, Region_2, ..., Layer_1": the region and layer names, for messages.
 std::string region_and_layer_names(const StructuralModel& model);
 

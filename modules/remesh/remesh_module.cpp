@@ -323,13 +323,9 @@ class RemeshModule final : public Module {
     options.gradation = parameters.get_double("gradation");
     if (parameters.has("size"))
       options.sizes = parse_size_rules(parameters.get_string("size"), "--size");
-    if (parameters.has("size-field")) {
-      const SizeSamples samples = read_size_field(parameters.get_string("size-field"));
-      std::vector<Vec3> local;
-      local.reserve(samples.points.size());
-      for (const Vec3& x : samples.points) local.push_back(x - context.model->frame.origin);
-      options.size_field = std::make_shared<const SizeField>(std::move(local), samples.sizes);
-    }
+    if (parameters.has("size-field"))
+      options.size_field =
+          load_size_field(parameters.get_string("size-field"), context.model->frame.origin);
     if (options.sized()) {
       // Sizes finer than the input's triangles need finer triangles to be followed.
       const double h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));

@@ -58,13 +58,11 @@ std::string known_names(const StructuralModel& model, const std::string& pattern
         }
     return s;
   }
-  auto add = [&](const std::string& n) {
-    if (s.size() < 400) s += (s.empty() ? "" : ", ") + n;
-  };
-  for (const Interface& i : model.interfaces) add(i.name);
-  for (const Region& r : model.regions) add(r.name);
-  for (const Layer& l : model.layers) add(l.name);
-  return s.size() >= 400 ? s + ", ..." : s;
+  std::vector<std::string> names;
+  for (const Interface& i : model.interfaces) names.push_back(i.name);
+  for (const Region& r : model.regions) names.push_back(r.name);
+  for (const Layer& l : model.layers) names.push_back(l.name);
+  return names_for_message(names);
 }
 
 }  // namespace

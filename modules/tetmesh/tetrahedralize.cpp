@@ -561,9 +561,9 @@ double TetmeshOptions::volume_bound(int region) const {
   return bound;
 }
 
-bool TetmeshOptions::bounded() const {
-  return max_volume > 0.0 || std::any_of(region_max_volume.begin(), region_max_volume.end(),
-                                         [](double v) { return v > 0.0; });
+bool TetmeshOptions::has_region_bounds() const {
+  return std::any_of(region_max_volume.begin(), region_max_volume.end(),
+                     [](double v) { return v > 0.0; });
 }
 
 double optimisation_threshold(const TetmeshOptions& options) {
@@ -640,9 +640,7 @@ std::string tetgen_switches(const TetmeshOptions& options, bool quiet) {
     if (options.min_dihedral_deg > 0.0) s += "/" + number(options.min_dihedral_deg);
   }
   if (options.max_volume > 0.0) s += "a" + number(options.max_volume);
-  // A bare `a` (no number next) applies the bounds of the region list.
-  const auto& regions = options.region_max_volume;
-  if (std::any_of(regions.begin(), regions.end(), [](double v) { return v > 0.0; })) s += "a";
+  if (options.has_region_bounds()) s += "a";  // bare: the bounds of the region list
   if (options.sized()) s += "m";
   if (optimisation_threshold(options) > 0.0) s += "o/" + number(options.sliver_max_dihedral_deg);
   s += "A";
@@ -862,6 +860,12 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
   return surface_edges_under(model, mesh, flat, false);
 }
 
+/// The tets of `mesh` over their region's volume bound times `slack`, the largest first.
+std::vector<long> tets_over_bound(const VolumeMesh& mesh, const TetmeshOptions& options,
+                                  double slack = 1.0) {
+  return tets_over_volume(mesh, [&](int region) { return options.volume_bound(region) * slack; });
+}
+
 /// Size rounds (see TetmeshOptions::size_rounds): under Y, TetGen rejects every point inside
 /// the diametral ball of a kept surface triangle, so a tet over its volume bound next to a coarse
 /// triangle stays; the surface edges under such tets are bisected and TetGen runs again until
@@ -869,12 +873,11 @@ std::vector<std::array<int, 2>> edges_under_flat_tets(const StructuralModel& mod
 void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
                      TetmeshRun& info, ConvertedMesh& best) {
   if (!options.keep_surface || !options.bounded()) return;
-  const auto bound = [&](int region) { return options.volume_bound(region); };
   double seconds = info.plc_seconds + info.tetgen_seconds;
   std::shared_ptr<const StructuralModel> refined;
   int bisected = 0, rounds = 0;
   for (int round = 1; round <= options.size_rounds; ++round) {
-    const std::vector<long> over = tets_over_volume(best.mesh, bound);
+    const std::vector<long> over = tets_over_bound(best.mesh, options);
     if (over.empty()) break;
     const StructuralModel& from = refined ? *refined : model;
     std::vector<std::array<int, 2>> edges = edges_encroached_by(from, best.mesh, over);
@@ -919,8 +922,7 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
 void require_volume_bound(const StructuralModel& model, const TetmeshOptions& options,
                           const TetmeshRun& info, const VolumeMesh& mesh) {
   if (!options.bounded()) return;
-  const std::vector<long> over = tets_over_volume(
-      mesh, [&](int region) { return options.volume_bound(region) * (1.0 + kVolumeBoundSlack); });
+  const std::vector<long> over = tets_over_bound(mesh, options, 1.0 + kVolumeBoundSlack);
   if (over.empty()) return;
   const Tetrahedron& t = mesh.tets[over.front()];
   const Vec3 p[4] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
@@ -982,9 +984,7 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
               " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
     if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
-    if (options.bounded() &&
-        !tets_over_volume(mesh.mesh, [&](int r) { return options.volume_bound(r); }).empty())
-      break;
+    if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
     bisected += split;
     trial.surface_rounds = round;
     info = std::move(trial);

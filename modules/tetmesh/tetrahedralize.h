@@ -44,8 +44,10 @@ struct TetmeshOptions {
   bool sized() const { return surface_sizes || size_field != nullptr; }
   /// The volume bound of region r (0: none).
   double volume_bound(int region) const;
+  /// True when some region has a bound of its own (region_max_volume).
+  bool has_region_bounds() const;
   /// True when some tet has a volume bound.
-  bool bounded() const;
+  bool bounded() const { return max_volume > 0.0 || has_region_bounds(); }
   /// TetGen's mesh optimisation (after refinement) works on every tet whose largest dihedral
   /// angle exceeds this (degrees): edge/face flips (switch `o/<angle>`), smoothing of the points
   /// TetGen added, and sliver splitting by a point inside the sliver's edge star (both set in
