@@ -32,6 +32,15 @@ SizeField::~SizeField() = default;
 SizeField::SizeField(SizeField&&) noexcept = default;
 SizeField& SizeField::operator=(SizeField&&) noexcept = default;
 
+std::shared_ptr<const SizeField> SizeField::smallest(std::shared_ptr<const SizeField> a,
+                                                     std::shared_ptr<const SizeField> b) {
+  if (a == nullptr) return b;
+  if (b == nullptr) return a;
+  auto joined = std::make_shared<SizeField>(a->points_, a->sizes_);
+  joined->also_ = a->also_ == nullptr ? std::move(b) : smallest(a->also_, std::move(b));
+  return joined;
+}
+
 double SizeField::size_at(const Vec3& x, double slope) const {
   const size_t k = std::min<size_t>(kNearest, points_.size());
   std::uint32_t index[kNearest];
@@ -40,7 +49,7 @@ double SizeField::size_at(const Vec3& x, double slope) const {
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < found; ++i)
     best = std::min(best, sizes_[index[i]] + slope * std::sqrt(distance2[i]));
-  return best;
+  return also_ == nullptr ? best : std::min(best, also_->size_at(x, slope));
 }
 
 int SizeField::nearest(const Vec3& x) const {

@@ -20,8 +20,13 @@ class SizeField {
   SizeField(SizeField&&) noexcept;
   SizeField& operator=(SizeField&&) noexcept;
 
+  /// A field whose size is the smaller of `a`'s and `b`'s (either may be null; null when both
+  /// are): two sources of sizes, each followed on its own. points() and sizes() are `a`'s.
+  static std::shared_ptr<const SizeField> smallest(std::shared_ptr<const SizeField> a,
+                                                   std::shared_ptr<const SizeField> b);
+
   /// The size at x for sizes growing by `slope` per unit length (gradation − 1), from the
-  /// kNearest points closest to x.
+  /// kNearest points closest to x (and the smaller one of the field joined by smallest()).
   double size_at(const Vec3& x, double slope) const;
   /// Index of the field's point nearest to x.
   int nearest(const Vec3& x) const;
@@ -36,6 +41,7 @@ class SizeField {
   std::vector<Vec3> points_;
   std::vector<double> sizes_;
   std::unique_ptr<Tree> tree_;
+  std::shared_ptr<const SizeField> also_;  // joined by smallest(), or null
 };
 
 }  // namespace voroseal

@@ -102,12 +102,15 @@ Vec3 TriangleSetDistance::closest_point(const Vec3& p) const {
   return Vec3(c.x(), c.y(), c.z());
 }
 
-OneSidedDistance one_sided_distance(const std::vector<Vec3>& samples, const TriangleSetDistance& target) {
+OneSidedDistance one_sided_distance(const std::vector<Vec3>& samples,
+                                    const TriangleSetDistance& target, std::vector<double>* each) {
   OneSidedDistance d;
   d.samples = samples.size();
+  if (each != nullptr) each->clear();
   if (samples.empty()) return d;
   if (target.empty()) {
     d.max = d.mean = d.rms = std::numeric_limits<double>::infinity();
+    if (each != nullptr) each->assign(samples.size(), d.max);
     return d;
   }
   const long n = static_cast<long>(samples.size());
@@ -125,6 +128,10 @@ OneSidedDistance one_sided_distance(const std::vector<Vec3>& samples, const Tria
   d.max_at = samples[imax];
   d.mean = sum / n;
   d.rms = std::sqrt(sum2 / n);
+  if (each != nullptr) {
+    each->resize(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) (*each)[i] = std::sqrt(d2[i]);
+  }
   return d;
 }
 

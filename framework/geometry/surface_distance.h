@@ -45,7 +45,10 @@ struct OneSidedDistance {
 };
 
 /// Distances from every point of `samples` to `target`, in parallel. +inf when the target is empty.
-OneSidedDistance one_sided_distance(const std::vector<Vec3>& samples, const TriangleSetDistance& target);
+/// `each`, when given, receives every sample's distance (in the order of `samples`).
+OneSidedDistance one_sided_distance(const std::vector<Vec3>& samples,
+                                    const TriangleSetDistance& target,
+                                    std::vector<double>* each = nullptr);
 
 struct HausdorffDistance {
   OneSidedDistance a_to_b, b_to_a;

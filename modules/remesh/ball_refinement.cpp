@@ -274,7 +274,7 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
 int refine_at_places(const StructuralModel& model, SeedOptimizationResult& seeds,
                      const SeedOptions& options, const std::vector<Vec3>& places,
                      const BallRefinementOptions& refine, int round, Logger& log,
-                     Progress& progress) {
+                     Progress& progress, const std::vector<double>* shrinks) {
   if (places.empty()) return 0;
   const std::vector<double> base_density =
       seeds.vertex_density.empty() ? options.vertex_density : seeds.vertex_density;
@@ -290,12 +290,14 @@ int refine_at_places(const StructuralModel& model, SeedOptimizationResult& seeds
   tree.buildIndex();
   std::vector<Spot> spots;
   spots.reserve(places.size());
-  for (const Vec3& x : places) {
+  for (size_t i = 0; i < places.size(); ++i) {
+    const Vec3& x = places[i];
     std::uint32_t v = 0;
     double d2 = 0.0;
     tree.knnSearch(x.data(), 1, &v, &d2);
     const double local = base_size[v];
-    spots.push_back({x, std::max(refine.shrink * local, refine.min_size), local});
+    const double shrink = shrinks != nullptr ? (*shrinks)[i] : refine.shrink;
+    spots.push_back({x, std::max(shrink * local, refine.min_size), local});
   }
   std::vector<double> factor(nv, 1.0);
   lower_sizes(geometry.vertices(), base_size, spots, refine.gradation, factor);

@@ -68,13 +68,13 @@ BallRefinementResult refine_until_ball_property(const StructuralModel& model,
                                                 Progress& progress);
 
 /// One round of the same refinement at given `places` (the model's local frame) where the remesh
-/// came out invalid: cells of `shrink` × the local size around each, graded, seeds added there
-/// and optimised again (`refine.iterations`). Returns the seeds added; `seeds` receives them
-/// and the density.
+/// came out invalid: cells of `shrink` × the local size around each (`shrinks[i]` instead when
+/// given, one per place), graded, seeds added there and optimised again (`refine.iterations`).
+/// Returns the seeds added; `seeds` receives them and the density.
 int refine_at_places(const StructuralModel& model, SeedOptimizationResult& seeds,
                      const SeedOptions& options, const std::vector<Vec3>& places,
                      const BallRefinementOptions& refine, int round, Logger& log,
-                     Progress& progress);
+                     Progress& progress, const std::vector<double>* shrinks = nullptr);
 
 /// Measures the failures of the final seeds on `rvd`, the diagram the mesh is built from: sets
 /// result's *_left counts and `left`, and appends their round (nothing refined in it).

@@ -22,6 +22,8 @@
 #include "io/size_field_format.h"
 #include "modules/check/model_validity.h"
 #include "modules/remesh/cleanup_report_json.h"
+#include "modules/remesh/distance_bound.h"
+#include "modules/remesh/inherited_defects.h"
 #include "modules/remesh/remesh.h"
 #include "modules/remesh/remesh_verdict.h"
 
@@ -49,6 +51,9 @@ constexpr int kRepairRounds = 5;
 constexpr int kKeepTopologyRepairRounds = 12;
 // Places of each failed check the refinement of an invalid remesh goes to.
 constexpr int kPlacesRefined = 200;
+// A crossing of the remesh is the input's own when the input's surfaces cross within this many
+// edge lengths of it.
+constexpr double kInheritedReach = 2.0;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -106,8 +111,10 @@ struct Judgement {
   }
 };
 
+/// `inherited`, when given, excuses what the input fails too (inherited_defects.h).
 Judgement judge(const StructuralModel& input, const RemeshResult& result, const std::string& out,
-                const WriteOptions& write, bool keep_topology) {
+                const WriteOptions& write, bool keep_topology,
+                const InputDefects* inherited = nullptr) {
   CheckOptions options;
   options.max_examples = kPlacesRefined;
   Judgement j;
@@ -122,7 +129,34 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
   j.verdict.checks.push_back(no_region_gained(input, result.topology, kPlacesRefined));
   if (keep_topology)
     j.verdict.checks.push_back(topology_kept(input, result.topology, kPlacesRefined));
+  if (inherited != nullptr)
+    inherited->excuse(result.model, result.topology.input_part_of_output,
+                      kInheritedReach * result.seeds.edge_length, j.verdict);
   return j;
+}
+
+/// An input that bounds no region is a set of surfaces (faults from a community fault model),
+/// not a model to seal: where its first remesh is invalid, the input's own verdict is taken,
+/// and what the input fails too is excused from then on. Null when the input bounds regions
+/// (its remesh must be valid), is valid, or the remesh was.
+std::unique_ptr<InputDefects> excuse_inherited(const StructuralModel& input,
+                                               const RemeshResult& result, Judgement& judgement,
+                                               Logger& log) {
+  if (judgement.verdict.valid() || !input.regions.empty()) return nullptr;
+  CheckOptions options;
+  options.max_examples = 0;
+  auto inherited = std::make_unique<InputDefects>(input, check_model(input, options));
+  if (!inherited->any()) return nullptr;
+  std::string failed;
+  for (const std::string& name : inherited->failed()) failed += (failed.empty() ? "" : ", ") + name;
+  log.warning("remesh: the input, a set of surfaces bounding no region, is not valid (" + failed +
+              (inherited->crossings() > 0
+                   ? ": " + std::to_string(inherited->crossings()) + " crossing triangle pairs"
+                   : std::string()) +
+              "): the remesh is judged against it, and what it inherits is a warning");
+  inherited->excuse(result.model, result.topology.input_part_of_output,
+                    kInheritedReach * result.seeds.edge_length, judgement.verdict);
+  return inherited;
 }
 
 /// Where an invalid remesh is refined: the failed checks' places, and the rims of the pockets
@@ -174,6 +208,121 @@ std::string defects_text(const ValidityReport& verdict) {
     if (!places.empty()) text += " (" + places + ")";
   }
   return text;
+}
+
+/// A distance bound asked for (`--distance-bound`) and the sizes it gave before the remesh.
+struct DistanceBound {
+  double bound = 0.0;
+  double h = 0.0;  // the uniform edge length
+  const DistanceSizing* sizing = nullptr;
+};
+
+nlohmann::json distance_json(const DistanceCheck& check, double bound) {
+  const HausdorffDistance& d = check.distance;
+  return {{"bound", bound},
+          {"hausdorff", d.hausdorff},
+          {"input_to_remesh", d.a_to_b.max},
+          {"remesh_to_input", d.b_to_a.max},
+          {"samples_over", check.samples_over},
+          {"held", d.hausdorff <= bound}};
+}
+
+/// Where the remesh strays farther than the bound from the input: smaller cells there
+/// (refine_at_places), the mesh built again, for up to kDistanceRounds rounds. A round's remesh
+/// stays when it has no more defects and is closer. Logs and reports the distance; a bound that
+/// does not hold sets exit code 1.
+nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceBound& asked,
+                                   const SeedOptions& options, const RemeshOptions& remesh_options,
+                                   const std::string& out, const WriteOptions& write,
+                                   const InputDefects* inherited, RemeshResult& result,
+                                   Judgement& judgement, Context& context) {
+  const double bound = asked.bound;
+  // One place per half cell: each gets smaller cells over the cell it lies in, graded.
+  const double spacing = 0.5 * asked.h;
+  const double refine_above = kDistanceRefineShare * bound;
+  DistanceCheck check = check_distance(input, result.model, bound, refine_above, spacing);
+  char line[320];
+  std::snprintf(line, sizeof line, "remesh: distance to the input %.4g, bound %.4g",
+                check.distance.hausdorff, bound);
+  context.log.info(line);
+  BallRefinementOptions refine = remesh_options.refinement;
+  refine.min_size = result.min_feature;
+  SeedOptimizationResult last = result.seeds;
+  nlohmann::json rounds = nlohmann::json::array();
+  for (int round = 0; round < kDistanceRounds && !check.places.empty(); ++round) {
+    if (!judgement.verdict.valid()) break;  // the repairs come first; they failed
+    const auto t0 = std::chrono::steady_clock::now();
+    ProgressStep step(context.progress, "remesh: distance round " + std::to_string(round + 1));
+    const std::vector<Vec3> places = check.places;
+    std::vector<double> shrinks(places.size());
+    for (size_t i = 0; i < places.size(); ++i)
+      shrinks[i] = std::clamp(refine_above / check.place_distance[i], kDistanceShrinkMin,
+                              kDistanceShrinkMax);
+    const int added = refine_at_places(input, last, options, places, refine, kRepairRounds + round,
+                                       context.log, context.progress, &shrinks);
+    RemeshResult next =
+        remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
+    Judgement j = judge(input, next, out, write, remesh_options.keep_topology, inherited);
+    DistanceCheck c = check_distance(input, next.model, bound, refine_above, spacing);
+    step.finish("distance " + std::to_string(c.distance.hausdorff));
+    rounds.push_back({{"places", places.size()},
+                      {"seeds_added", added},
+                      {"hausdorff", c.distance.hausdorff},
+                      {"defects", j.defects()},
+                      {"seconds", seconds_since(t0)}});
+    std::snprintf(line, sizeof line,
+                  "remesh: distance round %d: %zu places farther than %.4g from the input "
+                  "refined (%d seeds added): distance %.4g, %ld defects",
+                  round + 1, places.size(), bound, added, c.distance.hausdorff, j.defects());
+    context.log.info(line);
+    const HausdorffDistance& d = c.distance;
+    const Vec3 at =
+        (d.a_to_b.max >= d.b_to_a.max ? d.a_to_b.max_at : d.b_to_a.max_at) + input.frame.origin;
+    std::snprintf(line, sizeof line, "remesh: distance round %d: farthest at %.10g %.10g %.10g",
+                  round + 1, at.x(), at.y(), at.z());
+    context.log.debug(line);
+    for (size_t i = 0; i < c.places.size() && i < 40; ++i) {
+      const Vec3 x = c.places[i] + input.frame.origin;
+      std::snprintf(line, sizeof line, "remesh: distance place %.10g %.10g %.10g %.4g", x.x(),
+                    x.y(), x.z(), c.place_distance[i]);
+      context.log.debug(line);
+    }
+    const bool closer = c.distance.hausdorff < check.distance.hausdorff;
+    if (j.defects() <= judgement.defects() && closer) {
+      result = std::move(next);
+      judgement = std::move(j);
+      check = std::move(c);
+    } else {  // refine the last seeds further
+      check.places = std::move(c.places);
+      check.place_distance = std::move(c.place_distance);
+    }
+  }
+  nlohmann::json report = distance_json(check, bound);
+  report["rounds"] = std::move(rounds);
+  report["sizing"] = {{"samples", asked.sizing->samples},
+                      {"finer", asked.sizing->finer},
+                      {"smallest", asked.sizing->smallest}};
+  const HausdorffDistance& d = check.distance;
+  const bool held = d.hausdorff <= bound;
+  const Vec3 at =
+      (d.a_to_b.max >= d.b_to_a.max ? d.a_to_b.max_at : d.b_to_a.max_at) + input.frame.origin;
+  std::snprintf(line, sizeof line,
+                "remesh: two-sided distance to the input %.4g (input to remesh %.4g, remesh to "
+                "input %.4g): %s the bound %.4g%s",
+                d.hausdorff, d.a_to_b.max, d.b_to_a.max, held ? "within" : "PAST", bound,
+                held ? "" : ", farthest at");
+  std::string message = line;
+  if (!held) {
+    std::snprintf(line, sizeof line, " %.10g %.10g %.10g (%ld samples past it)", at.x(), at.y(),
+                  at.z(), check.samples_over);
+    context.log.error(message + line +
+                      "; features merged below --min-feature, or cells the refinement could "
+                      "not shrink further: see the report's distance_bound");
+    context.exit_code = std::max(context.exit_code, 1);
+  } else {
+    context.log.info(message);
+  }
+  return report;
 }
 
 class RemeshModule final : public Module {
@@ -263,8 +412,15 @@ class RemeshModule final : public Module {
                      "coordinates) or a .vtu with a scalar point data array of sizes (the "
                      "only one, or size or h): h at the points, graded away from them; the "
                      "smallest size wins"));
+    p.push_back(spec("distance-bound", ParameterType::String, nullptr,
+                     "keep the remesh within this distance of the input, a length or a "
+                     "percentage of the model's diagonal (0.1%): cells as coarse as the "
+                     "surfaces' curvature and the contacts' bends allow (never coarser than "
+                     "--seeds or --edge-length ask), then refined where the two-sided distance "
+                     "exceeds it; exit 1 when it cannot hold"));
     p.push_back(spec("gradation", ParameterType::Double, SeedOptions{}.gradation,
-                     "with --size or --size-field: sizes change by at most this factor between "
+                     "with --size, --size-field or --distance-bound: sizes change by at most this "
+                     "factor between "
                      "neighbouring cells",
                      1.01, 10.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
@@ -326,9 +482,27 @@ class RemeshModule final : public Module {
     if (parameters.has("size-field"))
       options.size_field =
           load_size_field(parameters.get_string("size-field"), context.model->frame.origin);
+    // The edge length of a uniform remesh with these seeds: what sizes are relative to.
+    const double uniform_h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));
+    const std::shared_ptr<const SizeField> user_field = options.size_field;
+    double distance_bound = 0.0;
+    DistanceSizing distance_sizes;
+    if (parameters.has("distance-bound")) {
+      distance_bound =
+          parse_distance_bound(parameters.get_string("distance-bound"), *context.model);
+      distance_sizes = distance_sizing(*context.model, distance_bound, uniform_h, context.threads);
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "remesh: distance bound %.4g: %d of %d samples of the surfaces and contacts "
+                    "need cells finer than %.4g (down to %.4g)",
+                    distance_bound, distance_sizes.finer, distance_sizes.samples, uniform_h,
+                    distance_sizes.smallest);
+      context.log.info(line);
+      options.size_field = SizeField::smallest(user_field, distance_sizes.field);
+    }
     if (options.sized()) {
       // Sizes finer than the input's triangles need finer triangles to be followed.
-      const double h = std::sqrt(2.0 * context.model->area() / (std::sqrt(3.0) * seed_count));
+      const double h = uniform_h;
       // The sizes change the seed count: the estimate counts the seeds they need, first on the
       // input's triangles (before any work), then on the triangles bisected for the sizes.
       auto sized_seeds = [&](const StructuralModel& model) {
@@ -378,6 +552,19 @@ class RemeshModule final : public Module {
         parameters.has("min-feature") ? parameters.get_double("min-feature") : -kDefaultMinFeatureFactor;
     remesh_options.cleanup.fidelity_tolerance =
         parameters.has("fidelity") ? parameters.get_double("fidelity") : -kDefaultFidelityFactor;
+    // Under a distance bound the clean-up splits where the remesh strays past it, and merges
+    // (which move the surfaces by up to d_min) stay within it.
+    if (distance_bound > 0.0 && !parameters.has("fidelity"))
+      remesh_options.cleanup.fidelity_tolerance =
+          std::min(kDefaultFidelityFactor * uniform_h, distance_bound);
+    if (distance_bound > 0.0 && !parameters.has("min-feature"))
+      remesh_options.cleanup.min_feature =
+          std::min(kDefaultMinFeatureFactor * uniform_h, distance_bound);
+    if (distance_bound > 0.0 && parameters.has("min-feature") &&
+        parameters.get_double("min-feature") > distance_bound)
+      context.log.warning(
+          "remesh: --min-feature is larger than --distance-bound: features "
+          "merged below it may leave the remesh farther than the bound");
     remesh_options.clean_up = parameters.get_bool("cleanup");
     remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
@@ -402,6 +589,8 @@ class RemeshModule final : public Module {
     const bool keep_topology = remesh_options.keep_topology;
     ProgressStep judging(context.progress, "remesh: verdict");
     Judgement judgement = judge(input, result, out, write, keep_topology);
+    const std::unique_ptr<const InputDefects> inherited =
+        excuse_inherited(input, result, judgement, context.log);
     judging.finish(judgement.verdict.valid() ? "valid" : "not valid");
     // Where the remesh came out invalid or closed a pocket, the dual was not faithful there:
     // smaller cells around each place, the seeds optimised again, the mesh built again. Each
@@ -427,7 +616,7 @@ class RemeshModule final : public Module {
         RemeshResult next =
             remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
         ProgressStep judging_again(context.progress, "remesh: verdict");
-        Judgement j = judge(input, next, out, write, keep_topology);
+        Judgement j = judge(input, next, out, write, keep_topology, inherited.get());
         judging_again.finish();
         const long defects = j.defects();
         step.finish(std::to_string(defects) + " defects left");
@@ -444,6 +633,12 @@ class RemeshModule final : public Module {
           judgement = std::move(j);
         }
       }
+    }
+    nlohmann::json distance_report;
+    if (distance_bound > 0.0) {
+      DistanceBound bound{distance_bound, uniform_h, &distance_sizes};
+      distance_report = hold_distance_bound(input, bound, options, remesh_options, out, write,
+                                            inherited.get(), result, judgement, context);
     }
     const SeedOptimizationResult& r = result.seeds;
 
@@ -469,10 +664,10 @@ class RemeshModule final : public Module {
                                {"edge_length", r.edge_length}};
     if (options.sized()) {
       report["sizes"] = sizes_json(input, result.model, r, context.log);
-      if (options.size_field)
-        report["sizes"]["field"] =
-            size_field_json(*options.size_field, input, result.model, context.log);
+      if (user_field)
+        report["sizes"]["field"] = size_field_json(*user_field, input, result.model, context.log);
     }
+    if (distance_bound > 0.0) report["distance_bound"] = std::move(distance_report);
     report["refinement"] = refinement_json(result.refinement);
     // The seeds the kept remesh has more than the first one.
     report["repair_refinement"] = {
@@ -573,6 +768,7 @@ class RemeshModule final : public Module {
     const bool valid = verdict.valid();
     report["valid"] = valid;
     report["validity"] = verdict_json(verdict);
+    if (inherited != nullptr) report["validity"]["inherited"] = inherited->failed();
     if (valid && !out.empty()) {
       write_text(text, out, write);
       context.log.info("remesh: wrote " + out);

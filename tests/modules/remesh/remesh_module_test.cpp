@@ -18,6 +18,7 @@
 #include "framework/host/registry.h"
 #include "framework/model/model_builder.h"
 #include "io/model_io.h"
+#include "modules/check/model_validity.h"
 #include "modules/remesh/model_geometry.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_optimization.h"
@@ -206,6 +207,47 @@ TEST(RemeshModule, SizeFieldRefinesAroundItsPointsOnACoarseInput) {
                InputError);
 }
 
+TEST(RemeshModule, DistanceBoundHoldsWhereTheUniformRemeshStraysPastIt) {
+  // A bumpy sphere at 150 seeds strays farther than 0.5 % of its diagonal from the input; with
+  // --distance-bound 0.5% the cells shrink where the bumps bend and the referee-style distance
+  // stays under the bound.
+  const StructuralModel input = build_model(test::bumpy_sphere(16, 0.1));
+  struct Run {
+    nlohmann::json report;
+    std::shared_ptr<const StructuralModel> model;
+    int exit_code = 0;
+  };
+  auto run = [&](nlohmann::json extra) {
+    test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+    harness.context.model = std::make_shared<StructuralModel>(input);
+    nlohmann::json values = {{"seeds", 150}};
+    values.update(extra);
+    harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
+    return Run{harness.context.report.at("remesh"), harness.context.model,
+               harness.context.exit_code};
+  };
+  const double bound = 0.005 * input.bbox().diagonal();
+  auto distance = [&](const StructuralModel& remesh) {
+    const ModelTriangles a = flatten(input), b = flatten(remesh);
+    return hausdorff_distance(input.vertices, a.triangles, remesh.vertices, b.triangles, 100000, 3)
+        .hausdorff;
+  };
+  EXPECT_GT(distance(*run(nlohmann::json::object()).model), bound);
+  const Run bounded = run({{"distance-bound", "0.5%"}});
+  const nlohmann::json& r = bounded.report;
+  EXPECT_EQ(bounded.exit_code, 0);
+  EXPECT_TRUE(r.at("valid").get<bool>());
+  EXPECT_GT(r.at("seeds").get<int>(), 150);
+  const nlohmann::json& d = r.at("distance_bound");
+  EXPECT_NEAR(d.at("bound").get<double>(), bound, 1e-12);
+  EXPECT_TRUE(d.at("held").get<bool>()) << d.dump();
+  EXPECT_LE(d.at("hausdorff").get<double>(), bound);
+  EXPECT_GT(d.at("sizing").at("finer").get<int>(), 0);
+  EXPECT_LE(distance(*bounded.model), bound);  // other samples than the module's
+  EXPECT_THROW(run({{"distance-bound", "-1"}}), ParameterError);
+  EXPECT_THROW(run({{"distance-bound", "0.1%%"}}), ParameterError);
+}
+
 TEST(RemeshModule, ZipPinchOutsClosesTheThinTongueAndReportsTheSteps) {
   // A tongue 0.01 thick under cells of about 0.15 (d_min 0.02): --zip-pinch-outs closes it; a
   // --zip-wedge under the tongue's wedges (about 4 deg at its tip) leaves it open.
@@ -327,6 +369,33 @@ TEST(RemeshModule, AnOutputThatCannotBeMadeValidIsNotWrittenAndNamesItsDefects) 
   clean.module.run(clean.context, Parameters(clean.module.parameters(), {{"seeds", 400}, {"iterations", 20}}));
   EXPECT_TRUE(clean.context.report.at("remesh").at("valid").get<bool>());
   EXPECT_EQ(clean.context.exit_code, 0);
+}
+
+TEST(RemeshModule, ASetOfSurfacesBoundingNoRegionIsJudgedAgainstItsInput) {
+  // Two squares crossing without a contact, no region: `check` finds the input invalid (free
+  // borders, no region, crossings), and its remesh fails the same checks by construction. It is
+  // judged against the input: valid, written, the inherited checks named in the report.
+  test::ModuleHarness harness(voroseal_register_remesh, "remesh");
+  harness.context.model =
+      std::make_shared<StructuralModel>(build_model(test::crossing_squares(0.513)));
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("voroseal_crossing_" + std::to_string(::getpid()) + ".obj"))
+                              .string();
+  harness.module.run(harness.context,
+                     Parameters(harness.module.parameters(),
+                                {{"seeds", 200}, {"iterations", 20}, {"output", out}}));
+  const nlohmann::json& r = harness.context.report.at("remesh");
+  EXPECT_TRUE(r.at("valid").get<bool>()) << r.at("validity").dump();
+  EXPECT_EQ(harness.context.exit_code, 0);
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+  const nlohmann::json& inherited = r.at("validity").at("inherited");
+  EXPECT_NE(std::find(inherited.begin(), inherited.end(), "self_intersections"), inherited.end());
+  EXPECT_NE(std::find(inherited.begin(), inherited.end(), "free_borders"), inherited.end());
+  // The remesh does cross where the input does.
+  const ValidityReport remeshed = check_model(*harness.context.model);
+  ASSERT_NE(remeshed.find("self_intersections"), nullptr);
+  EXPECT_GT(remeshed.find("self_intersections")->count, 0);
 }
 
 TEST(SharedModels, RestrictedVoronoiDiagramPartitionsRingModels) {

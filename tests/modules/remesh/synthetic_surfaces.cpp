@@ -76,6 +76,20 @@ SurfaceSoup flat_square(int n, double size) {
   return s;
 }
 
+SurfaceSoup crossing_squares(double upright_x) {
+  SurfaceSoup soup = flat_square(10, 1.0);
+  SurfaceSoup upright = flat_square(10, 1.0);
+  const int offset = static_cast<int>(soup.points.size());
+  for (const Vec3& p : upright.points) soup.points.emplace_back(upright_x, p.y(), p.x() - 0.5);
+  for (Triangle t : upright.triangles) {
+    for (int& v : t) v += offset;
+    soup.triangles.push_back(t);
+    soup.triangle_group.push_back(1);
+  }
+  soup.groups.push_back({"upright", "upright", SurfaceKind::Fault, ""});
+  return soup;
+}
+
 SurfaceSoup box_with_crossing_planes(int n) {
   SurfaceSoup s;
   s.source = "box_with_crossing_planes";
