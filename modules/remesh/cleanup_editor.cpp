@@ -162,7 +162,7 @@ Editor::Census Editor::census_around(const std::vector<char>& moved) {
     tris.push_back(s_.triangles[t]);
   }
   for (const auto& [a, b] : find_intersections_with(s_.vertices, tris, query))
-    c.crossings.emplace_back(index[a], index[b]);
+    if (!inherited_crossing(index[a], index[b])) c.crossings.emplace_back(index[a], index[b]);
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (const auto& [a, b] : edges) add_edge_violations(a, b, c);
@@ -188,7 +188,7 @@ Editor::Census Editor::census(bool topology) {
   // The exact search of `voroseal check`; pairs come back sorted, in `tris` order, which is
   // increasing triangle order.
   for (const auto& [a, b] : find_self_intersections(s_.vertices, tris))
-    c.crossings.emplace_back(index[a], index[b]);
+    if (!inherited_crossing(index[a], index[b])) c.crossings.emplace_back(index[a], index[b]);
   // Holes and leaks can only be on edges that are not two consistent triangles of one part;
   // those can only hold a pleat (see edge_violations()).
   std::vector<std::pair<std::pair<int, int>, int>> edges;

@@ -55,6 +55,11 @@ constexpr double kNeedleDeg = CleanupThresholds::kSliverDeg;
 class Editor {
  public:
   Editor(RemeshedSurface& s, const StructuralModel& input);
+  /// Crossings between triangles of these input parts (sorted pairs a < b) are the input's:
+  /// the census leaves them out (CleanupOptions::crossing_parts).
+  void ignore_crossings_between(std::vector<std::pair<int, int>> parts) {
+    crossing_parts_ = std::move(parts);
+  }
 
   // The exact tests here must see the coordinates that `voroseal check` reads back. Files hold
   // local + frame origin, and a reader subtracts its own origin (an integer), both rounded: on
@@ -357,6 +362,14 @@ class Editor {
   }
 
  private:
+  // True when triangles a and b remesh two input parts that cross in the input.
+  bool inherited_crossing(int a, int b) const {
+    if (crossing_parts_.empty()) return false;
+    const int pa = s_.triangle_part[a], pb = s_.triangle_part[b];
+    return std::binary_search(crossing_parts_.begin(), crossing_parts_.end(),
+                              std::make_pair(std::min(pa, pb), std::max(pa, pb)));
+  }
+  std::vector<std::pair<int, int>> crossing_parts_;
   struct Change {
     enum Kind { Moved, Changed, Added, Feature, Bend };
     Kind kind;

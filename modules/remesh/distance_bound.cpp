@@ -201,6 +201,10 @@ DistanceCheck check_distance(const StructuralModel& input, const StructuralModel
                              double bound, double refine_above, double spacing, size_t samples) {
   DistanceCheck check;
   const ModelTriangles a = flatten(input), b = flatten(remesh);
+  // The remesh in the input's local frame (each model has its own origin).
+  std::vector<Vec3> moved = remesh.vertices;
+  const Vec3 shift = remesh.frame.origin - input.frame.origin;
+  for (Vec3& x : moved) x += shift;
   GridCells cells(spacing);
   auto offer = [&](const Vec3& on_input, double distance) {
     const int next = static_cast<int>(check.places.size());
@@ -216,14 +220,14 @@ DistanceCheck check_distance(const StructuralModel& input, const StructuralModel
   const TriangleSetDistance to_input(input.vertices, a.triangles);
   {
     const std::vector<Vec3> from = sample_surface(input.vertices, a.triangles, samples, 1);
-    const TriangleSetDistance to_remesh(remesh.vertices, b.triangles);
+    const TriangleSetDistance to_remesh(moved, b.triangles);
     check.distance.a_to_b = one_sided_distance(from, to_remesh, &each);
     for (size_t i = 0; i < from.size(); ++i) {
       if (each[i] > bound) ++check.samples_over;
       if (each[i] > refine_above) offer(from[i], each[i]);
     }
   }
-  const std::vector<Vec3> from = sample_surface(remesh.vertices, b.triangles, samples, 1);
+  const std::vector<Vec3> from = sample_surface(moved, b.triangles, samples, 1);
   check.distance.b_to_a = one_sided_distance(from, to_input, &each);
   for (size_t i = 0; i < from.size(); ++i) {
     if (each[i] > bound) ++check.samples_over;

@@ -67,7 +67,7 @@ struct DistanceCheck {
   long samples_over = 0;  // samples of both sides farther than the bound itself
 };
 
-/// Measures how far `remesh` strays from `input` (same frame) against `bound`.
+/// Measures how far `remesh` strays from `input` against `bound`.
 DistanceCheck check_distance(const StructuralModel& input, const StructuralModel& remesh,
                              double bound, double refine_above, double spacing,
                              size_t samples = kDistanceSamples);

@@ -74,6 +74,14 @@ InputDefects::InputDefects(const StructuralModel& input, const ValidityReport& v
 
 InputDefects::~InputDefects() = default;
 
+std::vector<std::pair<int, int>> InputDefects::crossing_parts() const {
+  if (where_ == nullptr) return {};
+  std::vector<std::pair<int, int>> parts = where_->parts;
+  std::sort(parts.begin(), parts.end());
+  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  return parts;
+}
+
 void InputDefects::excuse(const StructuralModel& output,
                           const std::vector<int>& input_part_of_output, double reach,
                           ValidityReport& verdict) const {

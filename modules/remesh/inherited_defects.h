@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/model/structural_model.h"
@@ -27,6 +28,8 @@ class InputDefects {
   /// region orientation, self-intersections).
   const std::vector<std::string>& failed() const { return failed_; }
   long crossings() const { return crossings_; }
+  /// The pairs of input parts (a < b, sorted, unique) that cross in the input.
+  std::vector<std::pair<int, int>> crossing_parts() const;
 
   /// Turns the failed error checks of `verdict` (on `output`, a remesh of the input whose parts
   /// map to input parts by `input_part_of_output`) that the input fails too into warnings. A

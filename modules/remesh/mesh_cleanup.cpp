@@ -16,6 +16,7 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
                        Progress* progress) {
   CleanupReport report;
   Editor e(surface, input);
+  e.ignore_crossings_between(options.crossing_parts);
   e.set_projector(&projector);
   const ContactArcs arcs(input);
   e.set_fidelity(options.fidelity_tolerance, &arcs);

@@ -11,6 +11,8 @@
 #pragma once
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "framework/geometry/size_field.h"
 #include "framework/host/progress.h"
@@ -51,6 +53,10 @@ struct CleanupOptions {
   /// The size the cells should have around a point, relative (a graded remesh: sizes, thin
   /// layers, repair rounds); smoothing keeps that grading. Null: uniform.
   std::shared_ptr<const SizeField> target_size;
+  /// Pairs of input parts (a < b, sorted) that cross in the input, a set of surfaces bounding
+  /// no region (inherited_defects.h): their crossings are the input's, not the clean-up's to
+  /// count or undo.
+  std::vector<std::pair<int, int>> crossing_parts;
 };
 
 /// Cleans `surface` in place. Corners never move; contact vertices move along their contact;

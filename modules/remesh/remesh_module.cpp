@@ -136,16 +136,14 @@ Judgement judge(const StructuralModel& input, const RemeshResult& result, const 
 }
 
 /// An input that bounds no region is a set of surfaces (faults from a community fault model),
-/// not a model to seal: where its first remesh is invalid, the input's own verdict is taken,
-/// and what the input fails too is excused from then on. Null when the input bounds regions
-/// (its remesh must be valid), is valid, or the remesh was.
-std::unique_ptr<InputDefects> excuse_inherited(const StructuralModel& input,
-                                               const RemeshResult& result, Judgement& judgement,
-                                               Logger& log) {
-  if (judgement.verdict.valid() || !input.regions.empty()) return nullptr;
+/// not a model to seal: when `check` finds it invalid, its remesh is judged against it, and
+/// what the input fails too is excused (inherited_defects.h). Null for an input that bounds
+/// regions (its remesh must be valid) or is valid.
+std::unique_ptr<const InputDefects> defects_to_inherit(const StructuralModel& input, Logger& log) {
+  if (!input.regions.empty()) return nullptr;
   CheckOptions options;
   options.max_examples = 0;
-  auto inherited = std::make_unique<InputDefects>(input, check_model(input, options));
+  auto inherited = std::make_unique<const InputDefects>(input, check_model(input, options));
   if (!inherited->any()) return nullptr;
   std::string failed;
   for (const std::string& name : inherited->failed()) failed += (failed.empty() ? "" : ", ") + name;
@@ -154,8 +152,6 @@ std::unique_ptr<InputDefects> excuse_inherited(const StructuralModel& input,
                    ? ": " + std::to_string(inherited->crossings()) + " crossing triangle pairs"
                    : std::string()) +
               "): the remesh is judged against it, and what it inherits is a warning");
-  inherited->excuse(result.model, result.topology.input_part_of_output,
-                    kInheritedReach * result.seeds.edge_length, judgement.verdict);
   return inherited;
 }
 
@@ -281,12 +277,6 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
     std::snprintf(line, sizeof line, "remesh: distance round %d: farthest at %.10g %.10g %.10g",
                   round + 1, at.x(), at.y(), at.z());
     context.log.debug(line);
-    for (size_t i = 0; i < c.places.size() && i < 40; ++i) {
-      const Vec3 x = c.places[i] + input.frame.origin;
-      std::snprintf(line, sizeof line, "remesh: distance place %.10g %.10g %.10g %.4g", x.x(),
-                    x.y(), x.z(), c.place_distance[i]);
-      context.log.debug(line);
-    }
     const bool closer = c.distance.hausdorff < check.distance.hausdorff;
     if (j.defects() <= judgement.defects() && closer) {
       result = std::move(next);
@@ -584,13 +574,13 @@ class RemeshModule final : public Module {
     const WriteOptions write{{context.input_path}};
     const std::string out =
         parameters.has("output") ? parameters.get_string("output") : std::string();
+    const std::unique_ptr<const InputDefects> inherited = defects_to_inherit(input, context.log);
+    if (inherited != nullptr) remesh_options.cleanup.crossing_parts = inherited->crossing_parts();
     RemeshResult result =
         remesh_from_seeds(input, std::move(seeds), remesh_options, context.log, context.progress);
     const bool keep_topology = remesh_options.keep_topology;
     ProgressStep judging(context.progress, "remesh: verdict");
-    Judgement judgement = judge(input, result, out, write, keep_topology);
-    const std::unique_ptr<const InputDefects> inherited =
-        excuse_inherited(input, result, judgement, context.log);
+    Judgement judgement = judge(input, result, out, write, keep_topology, inherited.get());
     judging.finish(judgement.verdict.valid() ? "valid" : "not valid");
     // Where the remesh came out invalid or closed a pocket, the dual was not faithful there:
     // smaller cells around each place, the seeds optimised again, the mesh built again. Each

@@ -85,6 +85,11 @@ TEST(DistanceBound, CheckFindsWhereTheRemeshStraysAndNowhereElse) {
   const DistanceCheck same = check_distance(input, input, 1e-9, 1e-9, 0.05, 20000);
   EXPECT_LE(same.distance.hausdorff, 1e-12);
   EXPECT_TRUE(same.places.empty());
+  // The same surface in another local frame (each model has its own origin): no distance.
+  StructuralModel reframed = input;
+  reframed.frame.origin += Vec3(7.0, -3.0, 1.0);
+  for (Vec3& x : reframed.vertices) x -= Vec3(7.0, -3.0, 1.0);
+  EXPECT_LE(check_distance(input, reframed, 1e-9, 1e-9, 0.05, 20000).distance.hausdorff, 1e-9);
   const DistanceCheck check = check_distance(input, remesh, 0.01, 0.01, 0.05, 20000);
   EXPECT_NEAR(check.distance.b_to_a.max, 0.05, 1e-9);
   EXPECT_GT(check.distance.a_to_b.max, 0.01);
