@@ -73,6 +73,47 @@ struct PartSample {
   Vec3 position = Vec3::Zero();
 };
 
+// Sizes along the contacts: at each contact vertex, the first scale s down the ladder whose
+// contact vertices within s / 2 lie within `tolerance` of their best line. Appends the sizes
+// under h to `points` and `sizes`; counts the samples.
+void contact_sizes(const StructuralModel& model, double h, double tolerance,
+                   std::vector<Vec3>& points, std::vector<double>& sizes, int& samples) {
+  const double along_edges = ladder(h, kDistanceSizingSteps);
+  std::vector<Vec3> patch;
+  for (const Contact& contact : model.contacts) {
+    const std::vector<int>& line = contact.vertices;
+    // A closed contact repeats its first vertex last: walks go round it.
+    const long n = static_cast<long>(line.size()) - (contact.is_closed() ? 1 : 0);
+    auto at = [&](long j) -> const Vec3& {
+      return model.vertices[line[contact.is_closed() ? (j % n + n) % n : j]];
+    };
+    // Contacts bend at their vertices only: nearly every one is a sample.
+    GridCells cells(0.5 * along_edges);
+    for (long i = 0; i < n; ++i) {
+      const Vec3& x = at(i);
+      if (!cells.first(x)) continue;
+      ++samples;
+      int step = 0;
+      for (; step < kDistanceSizingSteps; ++step) {
+        const double reach = 0.5 * ladder(h, step);
+        patch.assign(1, x);
+        const long last = contact.is_closed() ? i + n - 1 : n - 1;
+        const long first = contact.is_closed() ? i - n + 1 : 0;
+        long ahead = i + 1;
+        for (; ahead <= last && (at(ahead) - x).norm() <= reach; ++ahead)
+          patch.push_back(at(ahead));
+        for (long j = i - 1; j >= first && j >= ahead - n && (at(j) - x).norm() <= reach; --j)
+          patch.push_back(at(j));
+        if (half_width(patch, true) <= tolerance) break;
+      }
+      if (step > 0) {
+        points.push_back(x);
+        sizes.push_back(ladder(h, step));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 double parse_distance_bound(const std::string& text, const StructuralModel& model) {
@@ -96,11 +137,9 @@ DistanceSizing distance_sizing(const StructuralModel& model, double bound, doubl
   std::vector<double> sizes;
 
   // Surface parts: each part's vertices and points along its edges (a part is flat inside its
-  // triangles and bends at their edges, which may be longer than a cell) in a k-d tree; samples
-  // one per grid cell.
+  // triangles and bends at their edges, which may be longer than a cell) in a k-d tree.
   const double along_edges = ladder(h, kDistanceSizingSteps);
   std::vector<std::vector<Vec3>> part_points(model.parts.size());
-  std::vector<PartSample> samples;
   for (size_t p = 0; p < model.parts.size(); ++p) {
     const SurfacePart& part = model.parts[p];
     std::vector<Vec3>& cloud = part_points[p];
@@ -114,9 +153,21 @@ DistanceSizing distance_sizing(const StructuralModel& model, double bound, doubl
       const int pieces = static_cast<int>(std::ceil((b - a).norm() / along_edges));
       for (int k = 1; k < pieces; ++k) cloud.push_back(a + (b - a) * (double(k) / pieces));
     }
-    GridCells cells(spacing);
-    for (const Vec3& x : cloud)
-      if (cells.first(x)) samples.push_back({static_cast<int>(p), x});
+    // Inside triangles larger than the patches: without points there, a patch on a crease
+    // between two large triangles holds only the crease's own points, which lie on a line.
+    for (const auto& f : part.mesh.faces()) {
+      Vec3 corner[3];
+      int k = 0;
+      for (const auto& v : f.vertices()) corner[k++] = model.vertices[part.model_vertex[v.idx()]];
+      const double longest =
+          std::max({(corner[1] - corner[0]).norm(), (corner[2] - corner[1]).norm(),
+                    (corner[0] - corner[2]).norm()});
+      const int n = static_cast<int>(std::ceil(longest / (2.0 * along_edges)));
+      for (int i = 1; i < n; ++i)
+        for (int j = 1; i + j < n; ++j)
+          cloud.push_back(corner[0] + (corner[1] - corner[0]) * (double(i) / n) +
+                          (corner[2] - corner[0]) * (double(j) / n));
+    }
   }
   std::vector<PointCloud> clouds(model.parts.size());
   std::vector<std::unique_ptr<PointKdTree>> trees(model.parts.size());
@@ -126,70 +177,64 @@ DistanceSizing distance_sizing(const StructuralModel& model, double bound, doubl
         std::make_unique<PointKdTree>(3, clouds[p], nanoflann::KDTreeSingleIndexAdaptorParams(16));
     trees[p]->buildIndex();
   }
-  std::vector<double> part_size(samples.size(), h);
-  const long n = static_cast<long>(samples.size());
-  const int nthreads = rvd_detail::active_threads(rvd_detail::resolve_threads(threads), n);
-#pragma omp parallel num_threads(nthreads)
-  {
-    std::vector<std::pair<std::uint32_t, double>> found;
-    std::vector<Vec3> patch;
+  // The size at a sample: the first scale down the ladder whose patch is flat enough.
+  auto size_at = [&](const PartSample& sample, std::vector<std::pair<std::uint32_t, double>>& found,
+                     std::vector<Vec3>& patch) {
     const nanoflann::SearchParams unsorted(32, 0.0, false);
-#pragma omp for schedule(dynamic, 64)
-    for (long i = 0; i < n; ++i) {
-      const PartSample& sample = samples[i];
-      const std::vector<Vec3>& cloud = part_points[sample.part];
-      int step = 0;
-      for (; step < kDistanceSizingSteps; ++step) {
-        const double radius = ladder(h, step) / std::sqrt(3.0);
-        trees[sample.part]->radiusSearch(sample.position.data(), radius * radius, found, unsorted);
-        const size_t stride = 1 + found.size() / kDistancePatchPoints;
-        patch.clear();
-        for (size_t k = 0; k < found.size(); k += stride) patch.push_back(cloud[found[k].first]);
-        if (half_width(patch, false) <= tolerance) break;
-      }
-      part_size[i] = ladder(h, step);
+    const std::vector<Vec3>& cloud = part_points[sample.part];
+    int step = 0;
+    for (; step < kDistanceSizingSteps; ++step) {
+      const double radius = ladder(h, step) / std::sqrt(3.0);
+      trees[sample.part]->radiusSearch(sample.position.data(), radius * radius, found, unsorted);
+      const size_t stride = 1 + found.size() / kDistancePatchPoints;
+      patch.clear();
+      for (size_t k = 0; k < found.size(); k += stride) patch.push_back(cloud[found[k].first]);
+      if (half_width(patch, false) <= tolerance) break;
     }
-  }
-  for (size_t i = 0; i < samples.size(); ++i)
-    if (part_size[i] < h) {
-      points.push_back(samples[i].position);
-      sizes.push_back(part_size[i]);
-    }
-  sizing.samples = static_cast<int>(samples.size());
-
-  // Contacts: the vertices along the contact within s / 2 of a sample, against their best line.
-  std::vector<Vec3> patch;
-  for (const Contact& contact : model.contacts) {
-    const std::vector<int>& line = contact.vertices;
-    // A closed contact repeats its first vertex last: walks go round it.
-    const long n = static_cast<long>(line.size()) - (contact.is_closed() ? 1 : 0);
-    auto at = [&](long j) -> const Vec3& {
-      return model.vertices[line[contact.is_closed() ? (j % n + n) % n : j]];
-    };
+    return ladder(h, step);
+  };
+  // Samples level by level: one per cell of a grid of h / 4; then, around every sample whose
+  // size came out under twice the spacing (a bend may lie between samples, whose patches then
+  // miss it), the cloud again at half the spacing, down to the smallest size.
+  std::vector<PartSample> level;
+  for (size_t p = 0; p < model.parts.size(); ++p) {
     GridCells cells(spacing);
-    for (long i = 0; i < n; ++i) {
-      const Vec3& x = at(i);
-      if (!cells.first(x)) continue;
-      ++sizing.samples;
-      int step = 0;
-      for (; step < kDistanceSizingSteps; ++step) {
-        const double reach = 0.5 * ladder(h, step);
-        patch.assign(1, x);
-        const long last = contact.is_closed() ? i + n - 1 : n - 1;
-        const long first = contact.is_closed() ? i - n + 1 : 0;
-        long ahead = i + 1;
-        for (; ahead <= last && (at(ahead) - x).norm() <= reach; ++ahead)
-          patch.push_back(at(ahead));
-        for (long j = i - 1; j >= first && j >= ahead - n && (at(j) - x).norm() <= reach; --j)
-          patch.push_back(at(j));
-        if (half_width(patch, true) <= tolerance) break;
+    for (const Vec3& x : part_points[p])
+      if (cells.first(x)) level.push_back({static_cast<int>(p), x});
+  }
+  for (double step = spacing; !level.empty(); step *= 0.5) {
+    std::vector<double> level_size(level.size(), h);
+    const long n = static_cast<long>(level.size());
+    const int nthreads = rvd_detail::active_threads(rvd_detail::resolve_threads(threads), n);
+#pragma omp parallel num_threads(nthreads)
+    {
+      std::vector<std::pair<std::uint32_t, double>> found;
+      std::vector<Vec3> patch;
+#pragma omp for schedule(dynamic, 64)
+      for (long i = 0; i < n; ++i) level_size[i] = size_at(level[i], found, patch);
+    }
+    sizing.samples += static_cast<int>(level.size());
+    std::vector<PartSample> finer;
+    const bool last = 0.5 * step < 0.5 * along_edges;
+    std::vector<GridCells> cells(model.parts.size(), GridCells(0.5 * step));
+    std::vector<std::pair<std::uint32_t, double>> found;
+    const nanoflann::SearchParams unsorted(32, 0.0, false);
+    for (size_t i = 0; i < level.size(); ++i) {
+      if (level_size[i] < h) {
+        points.push_back(level[i].position);
+        sizes.push_back(level_size[i]);
       }
-      if (step > 0) {
-        points.push_back(x);
-        sizes.push_back(ladder(h, step));
+      if (last || !(level_size[i] < 2.0 * step)) continue;
+      const PartSample& sample = level[i];
+      trees[sample.part]->radiusSearch(sample.position.data(), step * step, found, unsorted);
+      for (const auto& [k, d2] : found) {
+        const Vec3& x = part_points[sample.part][k];
+        if (cells[sample.part].first(x)) finer.push_back({sample.part, x});
       }
     }
+    level = std::move(finer);
   }
+  contact_sizes(model, h, tolerance, points, sizes, sizing.samples);
   sizing.finer = static_cast<int>(points.size());
   for (double s : sizes) sizing.smallest = std::min(sizing.smallest, s);
   if (!points.empty())

@@ -27,14 +27,16 @@ namespace voroseal {
 constexpr double kDistanceSizingShare = 0.7;
 /// Sizes go down from h by factors √2 at most this many times (h / 16 at the 8th).
 constexpr int kDistanceSizingSteps = 8;
-/// Samples of the sizing per edge length h along each direction.
+/// Samples of the sizing per edge length h along each direction at first; twice as many, level
+/// after level, around the samples whose size came out under twice their spacing.
 constexpr double kDistanceSamplesPerCell = 4.0;
 /// Points of a patch used in its plane fit, at most (a stride over the patch beyond).
 constexpr int kDistancePatchPoints = 512;
 /// Rounds of refinement after the check, at most.
 constexpr int kDistanceRounds = 4;
-/// Cells around a place that strays d > D: the size there times D / d (a lost feature strays
-/// as far as the cells are large; a sag shrinks faster), within these factors.
+/// Cells around a place that strays d > 0.9 D: the size there times 0.9 D / d (a cut crease or
+/// a lost feature strays as far as the cells are large; a sag shrinks faster), within these
+/// factors. (The square converged no faster on geogen's layercake: each rebuild strays anew.)
 constexpr double kDistanceShrinkMin = 0.25, kDistanceShrinkMax = 0.7;
 /// Places are refined where the remesh strays farther than this share of the bound: the check's
 /// samples are not the referee's, and a place just under the bound may be just over it there.

@@ -447,6 +447,7 @@ class RemeshModule final : public Module {
   void run(Context& context, const Parameters& parameters) const override {
     if (!context.model) throw ModelError("remesh: no model");
     warn_about_region_signs(*context.model, context.log);
+    const std::shared_ptr<const StructuralModel> as_read = context.model;
     SeedOptions options;
     std::string asked;  // the option that sets the resolution, for the memory estimate
     double seed_count = 0.0;
@@ -574,7 +575,8 @@ class RemeshModule final : public Module {
     const WriteOptions write{{context.input_path}};
     const std::string out =
         parameters.has("output") ? parameters.get_string("output") : std::string();
-    const std::unique_ptr<const InputDefects> inherited = defects_to_inherit(input, context.log);
+    // As read: the sizes may have bisected its triangles since (same parts, same surfaces).
+    const std::unique_ptr<const InputDefects> inherited = defects_to_inherit(*as_read, context.log);
     if (inherited != nullptr) remesh_options.cleanup.crossing_parts = inherited->crossing_parts();
     RemeshResult result =
         remesh_from_seeds(input, std::move(seeds), remesh_options, context.log, context.progress);
@@ -958,7 +960,9 @@ class RemeshModule final : public Module {
     for (const Region& r : model.regions)
       if (!r.sides.empty() && !(model.signed_volume(r.sides) < 0.0))
         wrong += (wrong.empty() ? "'" : ", '") + r.name + "'";
-    if (!model.universe.sides.empty() && !(model.signed_volume(model.universe.sides) > 0.0))
+    // A set of surfaces bounding no region has a universe of no volume: said once, later.
+    if (!model.regions.empty() && !model.universe.sides.empty() &&
+        !(model.signed_volume(model.universe.sides) > 0.0))
       wrong += (wrong.empty() ? "'" : ", '") + model.universe.name + "'";
     if (!wrong.empty())
       log.warning("remesh: input regions " + wrong +

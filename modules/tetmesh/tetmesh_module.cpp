@@ -164,8 +164,16 @@ class TetmeshModule : public Module {
         "triangle); the command fails when the bound still does not hold"};
     size.min = 0;
     size.max = kMaxSizeRounds;
-    return {output,    quality, dihedral, volume,   region_size, surface_sizes, size_field,
-            gradation, keep,    slivers,  optimise, refine,      rounds,        size};
+    ParameterSpec extra{
+        "extra-time", ParameterType::Double, TetmeshOptions{}.extra_time,
+        "the sliver passes and surface bisection rounds stop before they would take longer "
+        "than this many times the first TetGen run, or " +
+            std::to_string(static_cast<int>(kMinExtraSeconds)) +
+            " s (0: no limit; the --max-volume rounds are never cut)"};
+    extra.min = 0.0;
+    extra.max = 1000.0;
+    return {output, quality, dihedral, volume, region_size, surface_sizes, size_field, gradation,
+            keep,   slivers, optimise, refine, rounds,      size,          extra};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -195,6 +203,7 @@ class TetmeshModule : public Module {
     options.refine_surface_below_deg = parameters.get_double("refine-surface-below");
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
+    options.extra_time = parameters.get_double("extra-time");
 
     const auto start = std::chrono::steady_clock::now();
     ProgressStep tetgen(context.progress, "tetmesh: TetGen");
@@ -255,6 +264,7 @@ class TetmeshModule : public Module {
         {"split_triangles", run.split_facets},
         {"attempts", run.attempts},
         {"sliver_passes", run.sliver_passes},
+        {"extra_time_spent", run.extra_time_spent},
         {"sliver_points", run.sliver_points},
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},

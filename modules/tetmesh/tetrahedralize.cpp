@@ -682,10 +682,34 @@ std::vector<double> point_sizes(const StructuralModel& model, const PlcMap& map,
   return sizes;
 }
 
-/// One tet mesh of `model`: TetGen (in more facet orders when needed), then the sliver passes.
-/// Fills `info` except the census and the surface bisection figures.
-ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                               TetmeshRun& info) {
+/// The time left for the sliver passes and surface bisection rounds (TetmeshOptions::extra_time),
+/// set by the first TetGen run.
+class ExtraTime {
+ public:
+  ExtraTime(double share, double floor) : share_(share), floor_(floor) {}
+  /// A TetGen run of `seconds`: the first sets the budget, the others spend it.
+  void ran(double seconds) {
+    if (budget_ < 0.0) {
+      budget_ = std::max(share_ * seconds, floor_);
+    } else {
+      spent_ += seconds;
+    }
+    last_ = seconds;
+  }
+  /// True when another run, as long as the last, fits in what is left.
+  bool allows_another() const {
+    return share_ <= 0.0 || budget_ < 0.0 || spent_ + last_ <= budget_;
+  }
+
+ private:
+  double share_, floor_;
+  double budget_ = -1.0, spent_ = 0.0, last_ = 0.0;
+};
+
+/// One tet mesh of `model`: TetGen (in more facet orders when needed), then the sliver passes
+/// while `extra` allows them. Fills `info` except the census and the surface bisection figures.
+ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOptions& options,
+                               Logger& log, TetmeshRun& info, ExtraTime& extra) {
   auto start = std::chrono::steady_clock::now();
   tetgenio in;
   PlcMap map = build_plc(model, in, options.region_max_volume);
@@ -728,7 +752,9 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   auto tetgen = [&](tetgenio& out, std::string& printed, const std::string& what) {
     const auto began = std::chrono::steady_clock::now();
     const int code = run_tetgen(info.switches, in, out, printed, optimisation_threshold(effective));
-    info.tetgen_seconds += seconds_since(began);
+    const double seconds = seconds_since(began);
+    info.tetgen_seconds += seconds;
+    extra.ran(seconds);
     if (!printed.empty()) log.debug("TetGen -" + info.switches + " output (" + what + "):\n" + printed);
     return code;
   };
@@ -802,6 +828,10 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   std::vector<Vec3> kept;  // interior points of the kept mesh, added against slivers
   double best_angle = min_dihedral(best.mesh);
   for (int pass = 1; chase_slivers && pass <= effective.sliver_passes && best_angle < options.min_dihedral_deg; ++pass) {
+    if (!extra.allows_another()) {
+      info.extra_time_spent = true;
+      break;
+    }
     if (!surfaces) surfaces = std::make_unique<TriangleTree>(model.vertices, flatten(model).triangles);
     double forced = 180.0;
     const std::vector<Vec3> more = sliver_points(best.mesh, *surfaces, options.min_dihedral_deg, kept, forced);
@@ -871,7 +901,7 @@ std::vector<long> tets_over_bound(const VolumeMesh& mesh, const TetmeshOptions& 
 /// triangle stays; the surface edges under such tets are bisected and TetGen runs again until
 /// every tet is within the bound. Every round is kept: the bound, not the angles, is the aim.
 void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                     TetmeshRun& info, ConvertedMesh& best) {
+                     TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
   if (!options.keep_surface || !options.bounded()) return;
   double seconds = info.plc_seconds + info.tetgen_seconds;
   std::shared_ptr<const StructuralModel> refined;
@@ -891,7 +921,7 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
     try {
       split = bisect_edges(*next, edges);
       if (split == 0) break;
-      mesh = mesh_with_tetgen(*next, options, log, trial);
+      mesh = mesh_with_tetgen(*next, options, log, trial, extra);
     } catch (const MesherError& e) {
       log.warning(std::string("tetmesh: size round ") + std::to_string(round) + " failed (" +
                   e.what() + ")");
@@ -903,6 +933,7 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
               std::to_string(next->num_triangles()) + " triangles");
     bisected += split;
     rounds = round;
+    trial.extra_time_spent = trial.extra_time_spent || info.extra_time_spent;
     info = std::move(trial);
     best = std::move(mesh);
     refined = std::move(next);
@@ -954,8 +985,8 @@ void require_volume_bound(const StructuralModel& model, const TetmeshOptions& op
 /// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
 /// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
 /// angle rises. `best` and `info` become those of the last round kept.
-void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log, TetmeshRun& info,
-                    ConvertedMesh& best) {
+void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
   const double bound = options.refine_surface_below_deg;
   if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
   double best_angle = min_dihedral(best.mesh);
@@ -963,7 +994,12 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
   const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
   int bisected = 0;
+  bool spent = info.extra_time_spent;
   for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
+    if (!extra.allows_another()) {
+      spent = true;
+      break;
+    }
     const StructuralModel& from = refined ? *refined : model;
     const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound);
     if (edges.empty()) break;  // every tet below the bound is in a wedge
@@ -973,13 +1009,14 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     int split = 0;
     try {
       split = bisect_edges(*next, edges);
-      mesh = mesh_with_tetgen(*next, options, log, trial);
+      mesh = mesh_with_tetgen(*next, options, log, trial, extra);
     } catch (const MesherError& e) {
       log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) + " failed (" + e.what() +
                 "); keeping the previous mesh");
       break;
     }
     seconds += trial.plc_seconds + trial.tetgen_seconds;
+    spent = spent || trial.extra_time_spent;
     const double angle = min_dihedral(mesh.mesh);
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
               " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
@@ -993,6 +1030,7 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     refined = std::move(next);
   }
   info.bisected_edges = bisected;
+  info.extra_time_spent = spent;
   info.refined_model = refined;
   info.size_rounds = size_rounds;
   info.size_bisected_edges = size_edges;
@@ -1034,15 +1072,22 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   if (!(options.size_rounds >= 0 && options.size_rounds <= kMaxSizeRounds))
     throw ParameterError("size rounds " + std::to_string(options.size_rounds) +
                          " out of range [0, " + std::to_string(kMaxSizeRounds) + "]");
+  if (!(options.extra_time >= 0.0 && std::isfinite(options.extra_time)))
+    throw ParameterError("extra time " + number(options.extra_time) + " must be 0 or positive");
   if (!(options.attempts >= 1 && options.attempts <= 10))
     throw ParameterError("TetGen attempts " + std::to_string(options.attempts) + " out of range [1, 10]");
 
   TetmeshRun local_run;
   TetmeshRun& info = run != nullptr ? *run : local_run;
   info = TetmeshRun{};
-  ConvertedMesh best = mesh_with_tetgen(model, options, log, info);
-  refine_for_size(model, options, log, info, best);
-  refine_surface(model, options, log, info, best);
+  ExtraTime extra(options.extra_time, options.min_extra_seconds);
+  ConvertedMesh best = mesh_with_tetgen(model, options, log, info, extra);
+  refine_for_size(model, options, log, info, best, extra);
+  refine_surface(model, options, log, info, best, extra);
+  if (info.extra_time_spent)
+    log.info("tetmesh: sliver passes and surface bisection stopped after " +
+             number(options.extra_time) + " x the first TetGen run (or " +
+             number(options.min_extra_seconds) + " s): --extra-time raises the limit, 0 lifts it");
   require_volume_bound(model, options, info, best.mesh);
 
   VolumeMesh& mesh = best.mesh;

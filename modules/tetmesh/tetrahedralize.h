@@ -15,6 +15,9 @@
 
 namespace voroseal {
 
+/// TetmeshOptions::min_extra_seconds by default.
+constexpr double kMinExtraSeconds = 5.0;
+
 /// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
 constexpr int kMaxSizeRounds = 16;
 
@@ -95,6 +98,14 @@ struct TetmeshOptions {
   /// with an internal error or, under Y, splits surface triangles: TetGen 1.5 recovers edges in
   /// facet order and some orders avoid its weaknesses (see tetrahedralize()).
   int attempts = 3;
+  /// The sliver passes and the surface bisection rounds stop before their TetGen runs would
+  /// take longer than this many times the first run, or kMinExtraSeconds, whichever is more:
+  /// at many seeds they took 12 runs for little (docs/benchmarks.md). 0: no limit. The size
+  /// rounds, which make the volume bound hold, are never cut.
+  double extra_time = 1.0;
+  /// The time the passes and rounds may take whatever the first run's: small models keep every
+  /// pass.
+  double min_extra_seconds = kMinExtraSeconds;
 };
 
 /// The TetGen switch string for `options`: `p` (PLC), `q<ratio>/<angle>` (when the ratio is
@@ -152,6 +163,8 @@ struct TetmeshRun {
   int split_facets = 0;                   // input triangles not found whole in the output
   int attempts = 0;                       // TetGen runs before the sliver passes (facet orders)
   int sliver_passes = 0;                  // extra TetGen runs made against surface slivers
+  /// Passes or rounds not run because TetmeshOptions::extra_time was spent.
+  bool extra_time_spent = false;
   int sliver_points = 0;                  // interior points added against them (kept mesh)
   double surface_min_angle_deg = 180.0;   // smallest angle of the model's triangles
   long surface_needles = 0;               // model triangles sharper than 1°

@@ -505,6 +505,32 @@ TEST(Tetrahedralize, SliverPassesRaiseTheSmallestDihedralAngle) {
   expect_valid_mesh(model, mesh);
 }
 
+TEST(Tetrahedralize, SliverPassesStopWhenTheirTimeIsSpent) {
+  // The passes of the test above, with no time left after the first run: none is made, the run
+  // says why, and the mesh is the first run's. With no limit (0) they run as before.
+  const StructuralModel model = read_model(test::bundled_model("folded_layers.ts"));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.sliver_max_dihedral_deg = 0;
+  options.refine_surface_below_deg = 0;
+  options.extra_time = 1e-9;
+  options.min_extra_seconds = 0.0;
+  TetmeshRun capped;
+  const VolumeMesh first = tetrahedralize(model, options, log, &capped);
+  EXPECT_EQ(capped.sliver_passes, 0);
+  EXPECT_EQ(capped.sliver_points, 0);
+  EXPECT_TRUE(capped.extra_time_spent);
+  EXPECT_LT(measure_volume(first).min_dihedral_deg, 5.0);
+  options.extra_time = 0.0;
+  TetmeshRun free;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &free);
+  EXPECT_FALSE(free.extra_time_spent);
+  EXPECT_GE(free.sliver_passes, 1);
+  EXPECT_GT(measure_volume(mesh).min_dihedral_deg, 5.0);
+  options.extra_time = -1.0;
+  EXPECT_THROW(tetrahedralize(model, options, log), ParameterError);
+}
+
 TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   // A layer a quarter of its triangles thick: TetGen's sliver splitting leaves tets with a short
   // edge across the layer seen from far vertices (no face on a surface); the off-centres of
