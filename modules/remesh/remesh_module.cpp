@@ -260,7 +260,8 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
         remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
     Judgement j = judge(input, next, out, write, remesh_options.keep_topology, inherited);
     DistanceCheck c = check_distance(input, next.model, bound, refine_above, spacing);
-    step.finish("distance " + std::to_string(c.distance.hausdorff));
+    std::snprintf(line, sizeof line, "distance %.4g", c.distance.hausdorff);
+    step.finish(line);
     rounds.push_back({{"places", places.size()},
                       {"seeds_added", added},
                       {"hausdorff", c.distance.hausdorff},
@@ -409,9 +410,8 @@ class RemeshModule final : public Module {
                      "--seeds or --edge-length ask), then refined where the two-sided distance "
                      "exceeds it; exit 1 when it cannot hold"));
     p.push_back(spec("gradation", ParameterType::Double, SeedOptions{}.gradation,
-                     "with --size, --size-field or --distance-bound: sizes change by at most this "
-                     "factor between "
-                     "neighbouring cells",
+                     "with --size, --size-field or --distance-bound: sizes change by at most "
+                     "this factor between neighbouring cells",
                      1.01, 10.0));
     p.push_back(spec("zip-pinch-outs", ParameterType::Bool, false,
                      "close layers that end in a pinch-out and stay thinner than d_min past it: their two sides "
