@@ -103,6 +103,14 @@ PhaseCounts fidelity(Editor& e, const CleanupContext& c) {
   return r;
 }
 
+PhaseCounts grading(Editor& e, const CleanupContext& c) {
+  PhaseCounts r;
+  r.progress = r.counts.grading_splits =
+      grade_neighbours(e, c.projector, c.thresholds.max_neighbour_ratio);
+  if (r.progress > 0) r.counts.flips = flip_edges(e, c.thresholds.flip_flatness_deg);
+  return r;
+}
+
 PhaseCounts pinch_out_zip(Editor& e, const CleanupContext& c) {
   PhaseCounts r;
   const PinchZips zips = zip_pinch_outs(e, c.options.min_feature, c.options.zip_wedge_deg);

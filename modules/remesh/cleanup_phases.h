@@ -40,6 +40,10 @@ PhaseCounts quality(Editor& e, const CleanupContext& c);
 // and a smoothing pass.
 PhaseCounts fidelity(Editor& e, const CleanupContext& c);
 
+// ---- grading ----
+// The larger of two neighbouring triangles more than a ratio apart in size split, then flips.
+PhaseCounts grading(Editor& e, const CleanupContext& c);
+
 // ---- volume readiness ----
 // Layers thinner than d_min past a pinch-out zipped closed (one edit, see zip_pinch_outs).
 PhaseCounts pinch_out_zip(Editor& e, const CleanupContext& c);

@@ -6,7 +6,7 @@ int CleanupCounts::edits() const {
   return valence3_removed + valence3_raised + needles_collapsed + sharp_collapses +
          contact_collapses + angle_moves + quality_moves + sharp_moves + wedge_moves + tips_joined +
          pinch_zips + pinch_rungs + pinch_pockets + flips + smoothing_moves + coincident_removed +
-         fidelity_splits + static_cast<int>(merges.size());
+         fidelity_splits + grading_splits + static_cast<int>(merges.size());
 }
 
 void CleanupCounts::add(const CleanupCounts& o) {
@@ -29,6 +29,7 @@ void CleanupCounts::add(const CleanupCounts& o) {
   coincident_removed += o.coincident_removed;
   intersections_found += o.intersections_found;
   fidelity_splits += o.fidelity_splits;
+  grading_splits += o.grading_splits;
   merges.insert(merges.end(), o.merges.begin(), o.merges.end());
 }
 

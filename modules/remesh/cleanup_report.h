@@ -30,6 +30,7 @@ struct CleanupCounts {
   int coincident_removed = 0;   // triangles of two parts on the same three vertices, removed
   int intersections_found = 0;  // intersecting triangle pairs before the repair
   int fidelity_splits = 0;      // edges split to follow the input closer than the tolerance
+  int grading_splits = 0;       // edges split where neighbours differ too much in size
   std::vector<FeatureMerge> merges;  // features merged closer than min_feature
 
   // Every edit counted above.

@@ -295,6 +295,11 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
 // farthest first, at most `max_splits`.
 int refine_toward_input(Editor& e, double tolerance, int max_splits);
 
+// Grading (cleanup_grading.cpp): where two triangles sharing an edge have mean edge lengths more
+// than `max_ratio` apart, the longest edge of the larger one inside its part or along a contact
+// is split at its middle, moved onto the part or the contact. Returns the splits.
+int grade_neighbours(Editor& e, const SurfaceProjector& projector, double max_ratio);
+
 // Where a contact vertex may move: its contact edges then stray from the input contact by no
 // more than the fidelity tolerance (or than they did), so that the moves after the fidelity
 // refinement do not undo it (a chord sliding over a bend). The vertices the refinement put at

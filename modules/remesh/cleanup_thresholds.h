@@ -64,6 +64,10 @@ struct CleanupThresholds {
   // input's roughness below the asked resolution, where splits only trade shape for pinned
   // vertices (docs/benchmarks.md).
   double fidelity_split_share = 0.02;
+  // Neighbouring triangles whose mean edges differ by more than this are split (issue 26's
+  // bar for a graded remesh); each round may leave a pair one step further out.
+  double max_neighbour_ratio = 2.0;
+  int grading_rounds = 3;
   // Each contact spacing round may leave a short edge next to the one collapsed.
   int contact_spacing_rounds = 3;
   // The angle passes move one vertex at a time; each pass frees its neighbours' moves.

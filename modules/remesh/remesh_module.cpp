@@ -717,6 +717,7 @@ class RemeshModule final : public Module {
                          {"pinch_zip_undone", result.cleanup.pinch_zip_undone},
                          {"flips", result.cleanup.flips},
                          {"fidelity_splits", result.cleanup.fidelity_splits},
+                         {"grading_splits", result.cleanup.grading_splits},
                          {"coincident_removed", result.cleanup.coincident_removed},
                          {"intersections_found", result.cleanup.intersections_found},
                          {"intersections_left", result.cleanup.intersections_left},

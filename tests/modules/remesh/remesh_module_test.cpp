@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -143,6 +144,26 @@ TEST(RemeshModule, ThinLayersAddSeedsOnTheLayerAndReportThem) {
   EXPECT_THROW(run({{"thin-layers", true}, {"corner-ratio", -1.0}}), ParameterError);
 }
 
+// The largest ratio of mean edge lengths between two triangles sharing an edge.
+double largest_neighbour_ratio(const StructuralModel& model) {
+  const ModelTriangles flat = flatten(model);
+  std::vector<double> mean(flat.triangles.size());
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  for (size_t t = 0; t < flat.triangles.size(); ++t) {
+    const Triangle& f = flat.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int u = f[i], v = f[(i + 1) % 3];
+      mean[t] += (model.vertices[u] - model.vertices[v]).norm() / 3.0;
+      by_edge[{std::min(u, v), std::max(u, v)}].push_back(static_cast<int>(t));
+    }
+  }
+  double largest = 1.0;
+  for (const auto& [edge, tris] : by_edge)
+    for (int a : tris)
+      for (int b : tris) largest = std::max(largest, mean[a] / mean[b]);
+  return largest;
+}
+
 TEST(RemeshModule, SizesPerSurfaceAreRealisedAndReported) {
   // The horizon of a box at half the size of the rest: more seeds, and each surface's mean edge
   // near the size asked for it once graded.
@@ -153,12 +174,21 @@ TEST(RemeshModule, SizesPerSurfaceAreRealisedAndReported) {
     nlohmann::json values = {{"edge-length", 0.2}};
     values.update(extra);
     harness.module.run(harness.context, Parameters(harness.module.parameters(), values));
-    return harness.context.report.at("remesh");
+    nlohmann::json report = harness.context.report.at("remesh");
+    report["neighbour_ratio"] = largest_neighbour_ratio(*harness.context.model);
+    return report;
   };
   const nlohmann::json plain = run(nlohmann::json::object());
   EXPECT_FALSE(plain.contains("sizes"));
   const nlohmann::json sized = run({{"size", "horizon=0.1"}});
   EXPECT_GT(sized.at("seeds").get<int>(), plain.at("seeds").get<int>());
+  // Graded: no two neighbouring triangles more than twice apart in size. A steep gradation
+  // leaves such pairs; the grading phase splits them.
+  EXPECT_LE(sized.at("neighbour_ratio").get<double>(), 2.0) << sized.at("cleanup").dump();
+  const nlohmann::json steep = run({{"size", "horizon=0.05"}, {"gradation", 3.0}});
+  EXPECT_GT(steep.at("cleanup").at("grading_splits").get<int>(), 0);
+  EXPECT_LE(steep.at("neighbour_ratio").get<double>(), 2.0) << steep.at("cleanup").dump();
+  EXPECT_TRUE(steep.at("valid").get<bool>());
   EXPECT_TRUE(sized.at("valid").get<bool>());
   EXPECT_TRUE(sized.at("topology").at("regions_preserved").get<bool>());
   const nlohmann::json& surfaces = sized.at("sizes").at("surfaces");
