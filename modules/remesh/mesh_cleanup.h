@@ -53,6 +53,10 @@ struct CleanupOptions {
   /// The size the cells should have around a point, relative (a graded remesh: sizes, thin
   /// layers, repair rounds); smoothing keeps that grading. Null: uniform.
   std::shared_ptr<const SizeField> target_size;
+  /// Split where neighbouring triangles differ in size by more than
+  /// thresholds.max_neighbour_ratio: for the sizes a user asks for (--size, --size-field,
+  /// --distance-bound). Off for thin layers and repair rounds, whose tets it made flatter.
+  bool grade = false;
   /// Pairs of input parts (a < b, sorted) that cross in the input, a set of surfaces bounding
   /// no region (inherited_defects.h): their crossings are the input's, not the clean-up's to
   /// count or undo.

@@ -556,6 +556,7 @@ class RemeshModule final : public Module {
       context.log.warning(
           "remesh: --min-feature is larger than --distance-bound: features "
           "merged below it may leave the remesh farther than the bound");
+    remesh_options.cleanup.grade = options.sized();
     remesh_options.clean_up = parameters.get_bool("cleanup");
     remesh_options.refinement.max_rounds = static_cast<int>(parameters.get_int("refine-rounds"));
     remesh_options.keep_topology = parameters.get_bool("keep-topology");
