@@ -428,6 +428,35 @@ bool try_split(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feat
   });
 }
 
+bool split_longest_edge(Editor& e, const SurfaceProjector& projector, int t, bool along_contacts) {
+  const Triangle f = e.mesh().triangles[t];
+  const int part = e.mesh().triangle_part[t];
+  std::vector<int> tris;
+  int best = -1, best_contact = -1;
+  double longest = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const int u = f[i], v = f[(i + 1) % 3];
+    e.edge_triangles(u, v, tris);
+    const bool inside =
+        tris.size() == 2 && e.mesh().triangle_part[tris[0]] == e.mesh().triangle_part[tris[1]];
+    const int contact = inside || !along_contacts ? -1 : shared_contact(e, u, v);
+    if (!inside && contact < 0) continue;
+    const double length = (e.p(u) - e.p(v)).squaredNorm();
+    if (length > longest) {
+      longest = length;
+      best = i;
+      best_contact = contact;
+    }
+  }
+  if (best < 0) return false;
+  const int u = f[best], v = f[(best + 1) % 3];
+  const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
+  return best_contact >= 0
+             ? try_split(e, u, v, projector.on_contact(best_contact, middle),
+                         {VertexFeature::Contact, best_contact})
+             : try_split(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part});
+}
+
 void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>& touched) {
   OppositeFlip flip;
   for (int round = 0; round < 2; ++round)

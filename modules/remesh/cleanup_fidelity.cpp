@@ -62,7 +62,6 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
   }
   std::sort(strays.rbegin(), strays.rend());
   int splits = 0;
-  std::vector<int> tris;
   for (const auto& [far, t] : strays) {
     if (splits >= max_splits) break;
     if (!e.alive(t)) continue;
@@ -111,24 +110,8 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
       }
     }
     if (done || !e.alive(t)) continue;
-    const int part = e.mesh().triangle_part[t];
     if (centroid_stray(t) <= tolerance) continue;
-    // Split the longest edge inside the part, at its middle moved onto the part.
-    int best = -1;
-    double longest = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const int u = f[i], v = f[(i + 1) % 3];
-      e.edge_triangles(u, v, tris);
-      if (tris.size() != 2 || e.mesh().triangle_part[tris[0]] != e.mesh().triangle_part[tris[1]]) continue;
-      const double len = (e.p(u) - e.p(v)).squaredNorm();
-      if (len > longest) {
-        longest = len;
-        best = i;
-      }
-    }
-    if (best < 0) continue;
-    const int u = f[best], v = f[(best + 1) % 3];
-    if (try_split(e, u, v, projector.on_part(part, 0.5 * (e.p(u) + e.p(v))), {VertexFeature::Surface, part})) ++splits;
+    if (split_longest_edge(e, projector, t, false)) ++splits;
   }
   return splits;
 }

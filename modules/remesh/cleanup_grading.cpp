@@ -30,35 +30,7 @@ int grade_neighbours(Editor& e, const SurfaceProjector& projector, double max_ra
   int splits = 0;
   for (int t : larger) {
     if (!e.alive(t)) continue;  // split already, from a neighbour
-    const Triangle f = triangles[t];
-    const int part = e.mesh().triangle_part[t];
-    // The longest edge between two triangles of this part, or along a contact (split in every
-    // part there, so that the contact stays conformal); a border edge off contacts stays.
-    int best = -1, best_contact = -1;
-    double longest = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const int u = f[i], v = f[(i + 1) % 3];
-      e.edge_triangles(u, v, tris);
-      const bool inside =
-          tris.size() == 2 && e.mesh().triangle_part[tris[0]] == e.mesh().triangle_part[tris[1]];
-      const int contact = inside ? -1 : shared_contact(e, u, v);
-      if (!inside && contact < 0) continue;
-      const double length = (e.p(u) - e.p(v)).squaredNorm();
-      if (length > longest) {
-        longest = length;
-        best = i;
-        best_contact = contact;
-      }
-    }
-    if (best < 0) continue;
-    const int u = f[best], v = f[(best + 1) % 3];
-    const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
-    const bool split =
-        best_contact >= 0
-            ? try_split(e, u, v, projector.on_contact(best_contact, middle),
-                        {VertexFeature::Contact, best_contact})
-            : try_split(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part});
-    if (split) ++splits;
+    if (split_longest_edge(e, projector, t, true)) ++splits;
   }
   return splits;
 }

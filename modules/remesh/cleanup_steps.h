@@ -112,6 +112,12 @@ bool try_move(Editor& e, const SurfaceProjector& projector, int v, const Vec3& t
 // worse.
 bool try_split(Editor& e, int u, int v, const Vec3& x, const VertexFeature& feature);
 
+// Splits the longest edge of triangle t between two triangles of its part at its middle, moved
+// onto the part; with `along_contacts`, a contact edge too (moved onto the contact, split in
+// every part there, so that the contact stays conformal). A border edge off contacts stays.
+// True when an edge was split (try_split).
+bool split_longest_edge(Editor& e, const SurfaceProjector& projector, int t, bool along_contacts);
+
 // Flips the edges of `part` opposite v whose two triangles get a larger smallest angle by it,
 // where a triangle of v has one below `floor_deg` (after v was inserted into the part). The far
 // vertices of the flips are added to `touched`.

@@ -242,13 +242,20 @@ DistanceSizing distance_sizing(const StructuralModel& model, double bound, doubl
   return sizing;
 }
 
-DistanceCheck check_distance(const StructuralModel& input, const StructuralModel& remesh,
-                             double bound, double refine_above, double spacing, size_t samples) {
+InputDistance::InputDistance(const StructuralModel& input, size_t samples)
+    : input_(input),
+      samples_(samples),
+      triangles_(flatten(input)),
+      input_samples_(sample_surface(input.vertices, triangles_.triangles, samples, 1)),
+      to_input_(input.vertices, triangles_.triangles) {}
+
+DistanceCheck InputDistance::check(const StructuralModel& remesh, double bound, double refine_above,
+                                   double spacing) const {
   DistanceCheck check;
-  const ModelTriangles a = flatten(input), b = flatten(remesh);
+  const ModelTriangles b = flatten(remesh);
   // The remesh in the input's local frame (each model has its own origin).
   std::vector<Vec3> moved = remesh.vertices;
-  const Vec3 shift = remesh.frame.origin - input.frame.origin;
+  const Vec3 shift = remesh.frame.origin - input_.frame.origin;
   for (Vec3& x : moved) x += shift;
   GridCells cells(spacing);
   auto offer = [&](const Vec3& on_input, double distance) {
@@ -262,21 +269,19 @@ DistanceCheck check_distance(const StructuralModel& input, const StructuralModel
     }
   };
   std::vector<double> each;
-  const TriangleSetDistance to_input(input.vertices, a.triangles);
   {
-    const std::vector<Vec3> from = sample_surface(input.vertices, a.triangles, samples, 1);
     const TriangleSetDistance to_remesh(moved, b.triangles);
-    check.distance.a_to_b = one_sided_distance(from, to_remesh, &each);
-    for (size_t i = 0; i < from.size(); ++i) {
+    check.distance.a_to_b = one_sided_distance(input_samples_, to_remesh, &each);
+    for (size_t i = 0; i < input_samples_.size(); ++i) {
       if (each[i] > bound) ++check.samples_over;
-      if (each[i] > refine_above) offer(from[i], each[i]);
+      if (each[i] > refine_above) offer(input_samples_[i], each[i]);
     }
   }
-  const std::vector<Vec3> from = sample_surface(moved, b.triangles, samples, 1);
-  check.distance.b_to_a = one_sided_distance(from, to_input, &each);
+  const std::vector<Vec3> from = sample_surface(moved, b.triangles, samples_, 1);
+  check.distance.b_to_a = one_sided_distance(from, to_input_, &each);
   for (size_t i = 0; i < from.size(); ++i) {
     if (each[i] > bound) ++check.samples_over;
-    if (each[i] > refine_above) offer(to_input.closest_point(from[i]), each[i]);
+    if (each[i] > refine_above) offer(to_input_.closest_point(from[i]), each[i]);
   }
   check.distance.hausdorff = std::max(check.distance.a_to_b.max, check.distance.b_to_a.max);
   return check;

@@ -69,9 +69,23 @@ struct DistanceCheck {
   long samples_over = 0;  // samples of both sides farther than the bound itself
 };
 
-/// Measures how far `remesh` strays from `input` against `bound`.
-DistanceCheck check_distance(const StructuralModel& input, const StructuralModel& remesh,
-                             double bound, double refine_above, double spacing,
-                             size_t samples = kDistanceSamples);
+/// Distances of remeshes to one input: the input's samples and triangle tree are made once for
+/// all the checks of a remesh and its refinement rounds.
+class InputDistance {
+ public:
+  /// `samples` points on each side (sample_surface, seed 1). `input` must outlive this.
+  explicit InputDistance(const StructuralModel& input, size_t samples = kDistanceSamples);
+
+  /// How far `remesh` (its own frame) strays from the input against `bound`.
+  DistanceCheck check(const StructuralModel& remesh, double bound, double refine_above,
+                      double spacing) const;
+
+ private:
+  const StructuralModel& input_;
+  size_t samples_;
+  ModelTriangles triangles_;
+  std::vector<Vec3> input_samples_;
+  TriangleSetDistance to_input_;
+};
 
 }  // namespace voroseal

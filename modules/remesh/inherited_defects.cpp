@@ -51,11 +51,11 @@ InputDefects::InputDefects(const StructuralModel& input, const ValidityReport& v
   };
   for (const char* name : kWholeModelChecks)
     if (failed(name)) failed_.push_back(name);
-  if (!failed(kCrossings)) return;
-  failed_.push_back(kCrossings);
   const ModelTriangles flat = flatten(input);
   const std::vector<std::pair<int, int>> pairs =
       find_self_intersections(input.vertices, flat.triangles);
+  if (pairs.empty()) return;
+  failed_.push_back(kCrossings);
   where_ = std::make_unique<Crossings>();
   Crossings& w = *where_;
   for (const auto& [a, b] : pairs) {

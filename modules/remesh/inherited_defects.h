@@ -17,7 +17,8 @@ namespace voroseal {
 /// The input's failed error checks that a remesh of it fails by construction.
 class InputDefects {
  public:
-  /// From the input and `check`'s verdict on it.
+  /// From the input and `check`'s verdict on it. The crossings are found here, where their
+  /// places are kept: the verdict need not have tested them (CheckOptions::intersections).
   InputDefects(const StructuralModel& input, const ValidityReport& verdict);
   ~InputDefects();
   InputDefects(const InputDefects&) = delete;

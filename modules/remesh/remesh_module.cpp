@@ -143,6 +143,7 @@ std::unique_ptr<const InputDefects> defects_to_inherit(const StructuralModel& in
   if (!input.regions.empty()) return nullptr;
   CheckOptions options;
   options.max_examples = 0;
+  options.intersections = false;  // InputDefects finds the crossings, with their places
   auto inherited = std::make_unique<const InputDefects>(input, check_model(input, options));
   if (!inherited->any()) return nullptr;
   std::string failed;
@@ -213,6 +214,11 @@ struct DistanceBound {
   const DistanceSizing* sizing = nullptr;
 };
 
+/// Where the two-sided distance is reached, in file coordinates.
+Vec3 farthest(const HausdorffDistance& d, const Frame& frame) {
+  return (d.a_to_b.max >= d.b_to_a.max ? d.a_to_b.max_at : d.b_to_a.max_at) + frame.origin;
+}
+
 nlohmann::json distance_json(const DistanceCheck& check, double bound) {
   const HausdorffDistance& d = check.distance;
   return {{"bound", bound},
@@ -236,7 +242,8 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
   // One place per half cell: each gets smaller cells over the cell it lies in, graded.
   const double spacing = 0.5 * asked.h;
   const double refine_above = kDistanceRefineShare * bound;
-  DistanceCheck check = check_distance(input, result.model, bound, refine_above, spacing);
+  const InputDistance to_input(input);
+  DistanceCheck check = to_input.check(result.model, bound, refine_above, spacing);
   char line[320];
   std::snprintf(line, sizeof line, "remesh: distance to the input %.4g, bound %.4g",
                 check.distance.hausdorff, bound);
@@ -259,7 +266,7 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
     RemeshResult next =
         remesh_from_seeds(input, last, remesh_options, context.log, context.progress);
     Judgement j = judge(input, next, out, write, remesh_options.keep_topology, inherited);
-    DistanceCheck c = check_distance(input, next.model, bound, refine_above, spacing);
+    DistanceCheck c = to_input.check(next.model, bound, refine_above, spacing);
     std::snprintf(line, sizeof line, "distance %.4g", c.distance.hausdorff);
     step.finish(line);
     rounds.push_back({{"places", places.size()},
@@ -272,9 +279,7 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
                   "refined (%d seeds added): distance %.4g, %ld defects",
                   round + 1, places.size(), bound, added, c.distance.hausdorff, j.defects());
     context.log.info(line);
-    const HausdorffDistance& d = c.distance;
-    const Vec3 at =
-        (d.a_to_b.max >= d.b_to_a.max ? d.a_to_b.max_at : d.b_to_a.max_at) + input.frame.origin;
+    const Vec3 at = farthest(c.distance, input.frame);
     std::snprintf(line, sizeof line, "remesh: distance round %d: farthest at %.10g %.10g %.10g",
                   round + 1, at.x(), at.y(), at.z());
     context.log.debug(line);
@@ -295,8 +300,7 @@ nlohmann::json hold_distance_bound(const StructuralModel& input, const DistanceB
                       {"smallest", asked.sizing->smallest}};
   const HausdorffDistance& d = check.distance;
   const bool held = d.hausdorff <= bound;
-  const Vec3 at =
-      (d.a_to_b.max >= d.b_to_a.max ? d.a_to_b.max_at : d.b_to_a.max_at) + input.frame.origin;
+  const Vec3 at = farthest(d, input.frame);
   std::snprintf(line, sizeof line,
                 "remesh: two-sided distance to the input %.4g (input to remesh %.4g, remesh to "
                 "input %.4g): %s the bound %.4g%s",

@@ -82,15 +82,17 @@ TEST(DistanceBound, CheckFindsWhereTheRemeshStraysAndNowhereElse) {
       ++moved;
     }
   ASSERT_EQ(moved, 1);
-  const DistanceCheck same = check_distance(input, input, 1e-9, 1e-9, 0.05, 20000);
+  // One input, several remeshes checked against it.
+  const InputDistance to_input(input, 20000);
+  const DistanceCheck same = to_input.check(input, 1e-9, 1e-9, 0.05);
   EXPECT_LE(same.distance.hausdorff, 1e-12);
   EXPECT_TRUE(same.places.empty());
   // The same surface in another local frame (each model has its own origin): no distance.
   StructuralModel reframed = input;
   reframed.frame.origin += Vec3(7.0, -3.0, 1.0);
   for (Vec3& x : reframed.vertices) x -= Vec3(7.0, -3.0, 1.0);
-  EXPECT_LE(check_distance(input, reframed, 1e-9, 1e-9, 0.05, 20000).distance.hausdorff, 1e-9);
-  const DistanceCheck check = check_distance(input, remesh, 0.01, 0.01, 0.05, 20000);
+  EXPECT_LE(to_input.check(reframed, 1e-9, 1e-9, 0.05).distance.hausdorff, 1e-9);
+  const DistanceCheck check = to_input.check(remesh, 0.01, 0.01, 0.05);
   EXPECT_NEAR(check.distance.b_to_a.max, 0.05, 1e-9);
   EXPECT_GT(check.distance.a_to_b.max, 0.01);
   EXPECT_LT(check.distance.a_to_b.max, 0.05);
@@ -104,7 +106,7 @@ TEST(DistanceBound, CheckFindsWhereTheRemeshStraysAndNowhereElse) {
     EXPECT_LT((x - lifted_at).norm(), 0.1 * std::sqrt(2.0) + 1e-9);
     EXPECT_NEAR(x.z() + input.frame.origin.z(), 0.0, 1e-9);  // on the input
   }
-  const DistanceCheck loose = check_distance(input, remesh, 0.06, 0.06, 0.05, 20000);
+  const DistanceCheck loose = to_input.check(remesh, 0.06, 0.06, 0.05);
   EXPECT_TRUE(loose.places.empty());
   EXPECT_EQ(loose.samples_over, 0);
 }
