@@ -200,12 +200,32 @@ VolumeQuality measure_volume(const VolumeMesh& mesh) {
   q.max_volume = max_volume;
   q.nonpositive_tets = nonpositive;
   q.repeated_vertex_tets = repeated;
+  q.tets_below_deg = dihedral_census(mesh);
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     q.total_volume += q.region_volume[r];
     if (q.region_tets[r] > 0) ++q.regions;
   }
   q.nonconforming_triangles = static_cast<long>(triangles_not_in_tets(mesh).size());
   return q;
+}
+
+std::array<long, kDihedralCensusDeg.size()> dihedral_census(const VolumeMesh& mesh) {
+  std::array<long, kDihedralCensusDeg.size()> below{};
+  const long n = static_cast<long>(mesh.tets.size());
+#pragma omp parallel
+  {
+    std::array<long, kDihedralCensusDeg.size()> local{};
+#pragma omp for schedule(static) nowait
+    for (long t = 0; t < n; ++t) {
+      const Tetrahedron& tet = mesh.tets[t];
+      const double angle = min_dihedral_angle_deg(mesh.vertices[tet[0]], mesh.vertices[tet[1]],
+                                                  mesh.vertices[tet[2]], mesh.vertices[tet[3]]);
+      for (size_t i = 0; i < local.size(); ++i) local[i] += angle < kDihedralCensusDeg[i] ? 1 : 0;
+    }
+#pragma omp critical(voroseal_dihedral_census)
+    for (size_t i = 0; i < below.size(); ++i) below[i] += local[i];
+  }
+  return below;
 }
 
 std::vector<int> triangles_not_in_tets(const VolumeMesh& mesh) {

@@ -2,12 +2,17 @@
 // dihedral angles, radius–edge ratios, volumes per region, degenerate tets, conformity.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "framework/model/structural_model.h"
 #include "framework/model/volume_mesh.h"
 
 namespace voroseal {
+
+/// The angles the dihedral census counts tets under (degrees): the bounds users and the issue
+/// bars quote (TetGen's default 10°, the 15° of "well-shaped", 5° of "sliver").
+constexpr std::array<double, 5> kDihedralCensusDeg = {5.0, 10.0, 15.0, 20.0, 30.0};
 
 struct VolumeQuality {
   long vertices = 0;
@@ -16,6 +21,8 @@ struct VolumeQuality {
   int regions = 0;                  // distinct region ids used by the tets
   double min_dihedral_deg = 0.0;    // over all tets (180 when there are none)
   double max_dihedral_deg = 0.0;
+  /// Tets whose smallest dihedral angle is below kDihedralCensusDeg[i] (cumulative counts).
+  std::array<long, kDihedralCensusDeg.size()> tets_below_deg{};
   double max_radius_edge = 0.0;     // circumradius / shortest edge; √6/4 ≈ 0.612 for a regular tet
   double mean_radius_edge = 0.0;
   double min_volume = 0.0;          // smallest signed tet volume
@@ -37,6 +44,9 @@ struct VolumeQuality {
 /// Measures `mesh` (parallel over tets).
 /// \pre tet and triangle vertex ids are valid; region ids are >= 0.
 VolumeQuality measure_volume(const VolumeMesh& mesh);
+
+/// VolumeQuality::tets_below_deg alone (parallel over tets).
+std::array<long, kDihedralCensusDeg.size()> dihedral_census(const VolumeMesh& mesh);
 
 /// Indices of mesh.triangles that are not a face of any tet.
 std::vector<int> triangles_not_in_tets(const VolumeMesh& mesh);

@@ -44,11 +44,15 @@ nlohmann::json volume_json(const VolumeMesh& mesh, const VolumeQuality& q) {
                        {"tets", q.region_tets[r]},
                        {"volume", q.region_volume[r]}});
   }
+  nlohmann::json census = nlohmann::json::object();  // {"5": n, "10": n, ...}
+  for (size_t i = 0; i < kDihedralCensusDeg.size(); ++i)
+    census[std::to_string(static_cast<int>(kDihedralCensusDeg[i]))] = q.tets_below_deg[i];
   return {{"vertices", q.vertices},
           {"tets", q.tets},
           {"regions", q.regions},
           {"min_dihedral_deg", q.min_dihedral_deg},
           {"max_dihedral_deg", q.max_dihedral_deg},
+          {"tets_below_deg", census},
           {"max_radius_edge", q.max_radius_edge},
           {"mean_radius_edge", q.mean_radius_edge},
           {"nonpositive_tets", q.nonpositive_tets},
@@ -60,16 +64,17 @@ nlohmann::json volume_json(const VolumeMesh& mesh, const VolumeQuality& q) {
 
 std::string volume_table(const VolumeMesh& mesh, const VolumeQuality& q) {
   std::string out;
-  char line[256];
+  char line[384];
+  // The share of tets under 15° (kDihedralCensusDeg[2]), the bound of "well-shaped" tets.
+  const double under_15 = q.tets > 0 ? 100.0 * q.tets_below_deg[2] / q.tets : 0.0;
   std::snprintf(line, sizeof line,
-                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg; "
-                "radius-edge max %.3g "
-                "mean %.3g; %ld flat or inverted tets; %ld tets with a repeated vertex; %ld "
-                "surface triangles "
-                "not on a tet\n",
+                "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg, "
+                "%ld tets (%.3f %%) under 15 deg; radius-edge max %.3g mean %.3g; %ld flat or "
+                "inverted tets; %ld tets with a repeated vertex; %ld surface triangles not on a "
+                "tet\n",
                 q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg,
-                q.max_radius_edge, q.mean_radius_edge, q.nonpositive_tets, q.repeated_vertex_tets,
-                q.nonconforming_triangles);
+                q.tets_below_deg[2], under_15, q.max_radius_edge, q.mean_radius_edge,
+                q.nonpositive_tets, q.repeated_vertex_tets, q.nonconforming_triangles);
   out += line;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     if (q.region_tets[r] == 0) continue;

@@ -157,6 +157,12 @@ class TetmeshModule : public Module {
                          "at most this many surface bisection rounds (each halves the edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
+    ParameterSpec polish{
+        "polish-dihedral", ParameterType::Double, TetmeshOptions{}.polish_dihedral_deg,
+        "a last TetGen run refining to this dihedral bound (degrees) on the surfaces and points "
+        "kept, kept when its smallest dihedral angle is no lower (0: none)"};
+    polish.min = 0.0;
+    polish.max = 60.0;
     ParameterSpec size{
         "size-rounds", ParameterType::Int, 8,
         "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
@@ -173,7 +179,7 @@ class TetmeshModule : public Module {
     extra.min = 0.0;
     extra.max = 1000.0;
     return {output, quality, dihedral, volume, region_size, surface_sizes, size_field, gradation,
-            keep,   slivers, optimise, refine, rounds,      size,          extra};
+            keep,   slivers, optimise, refine, rounds,      polish,        size,       extra};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -201,6 +207,7 @@ class TetmeshModule : public Module {
     options.sliver_passes = static_cast<int>(parameters.get_int("sliver-passes"));
     options.sliver_max_dihedral_deg = parameters.get_double("sliver-max-dihedral");
     options.refine_surface_below_deg = parameters.get_double("refine-surface-below");
+    options.polish_dihedral_deg = parameters.get_double("polish-dihedral");
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
     options.extra_time = parameters.get_double("extra-time");
@@ -248,6 +255,13 @@ class TetmeshModule : public Module {
                                     {"needle", group(run.slivers.needle)},
                                     {"surface", group(run.slivers.surface)},
                                     {"interior", group(run.slivers.interior)}};
+    // Tets under each census angle: {"5": n, "10": n, ...}.
+    auto census = [](const std::array<long, kDihedralCensusDeg.size()>& below) {
+      nlohmann::json counts = nlohmann::json::object();
+      for (size_t i = 0; i < below.size(); ++i)
+        counts[std::to_string(static_cast<int>(kDihedralCensusDeg[i]))] = below[i];
+      return counts;
+    };
     // The thinnest wedge between surfaces inside a region: no mesh keeping them does better.
     const std::vector<ContactWedge> wedges = thin_contact_wedges(model, kWedgeReportDeg);
     nlohmann::json report = {
@@ -266,6 +280,9 @@ class TetmeshModule : public Module {
         {"sliver_passes", run.sliver_passes},
         {"extra_time_spent", run.extra_time_spent},
         {"sliver_points", run.sliver_points},
+        {"polished", run.polished},
+        {"tets_below_deg",
+         {{"tetgen", census(run.tetgen_tets_below)}, {"final", census(quality.tets_below_deg)}}},
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
@@ -295,6 +312,16 @@ class TetmeshModule : public Module {
     context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
                      " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
                      std::to_string(quality.max_radius_edge));
+    // The dihedral histogram before (TetGen's first mesh) and after the passes, rounds, polish.
+    std::string marks, first, last;
+    for (size_t i = 0; i < kDihedralCensusDeg.size(); ++i) {
+      const char* sep = i == 0 ? "" : "/";
+      marks += sep + std::to_string(static_cast<int>(kDihedralCensusDeg[i]));
+      first += sep + std::to_string(run.tetgen_tets_below[i]);
+      last += sep + std::to_string(quality.tets_below_deg[i]);
+    }
+    context.log.info("tetmesh: tets under " + marks + " deg: " + first + " from TetGen, " + last +
+                     " in the end");
     // A point of the model's local frame, in file coordinates, for the log.
     auto file_point = [](const Vec3& local, const Vec3& origin) {
       const Vec3 at = local + origin;

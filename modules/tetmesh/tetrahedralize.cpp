@@ -5,13 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
+#include <memory>
+#include <optional>
 #include <random>
 #include <regex>
 #include <set>
 #include <sstream>
-#include <limits>
-#include <memory>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -31,6 +32,8 @@ namespace {
 
 // Relative rounding slack on --max-volume when the mesh is checked against it.
 constexpr double kVolumeBoundSlack = 1e-9;
+// The census bin the polish run's log line quotes (15°: the "well-shaped" bound).
+constexpr size_t kPolishCensusBin = 2;
 // TetGen's point sizes (switch m) bound the circumradius of the tets at a point; a regular tet
 // of edge H has circumradius H √6 / 4.
 const double kCircumradiusPerEdge = std::sqrt(6.0) / 4.0;
@@ -295,6 +298,7 @@ struct ConvertedMesh {
   VolumeMesh mesh;
   int split_facets = 0;       // model triangles not found whole among TetGen's faces
   long relabelled_tets = 0;   // tets TetGen left without a region
+  std::vector<Vec3> interior_points;  // the sliver points TetGen got besides the PLC's
 };
 
 ConvertedMesh to_volume_mesh(const StructuralModel& model, const PlcMap& map, const tetgenio& in, int plc_points,
@@ -690,6 +694,7 @@ class ExtraTime {
   /// A TetGen run of `seconds`: the first sets the budget, the others spend it.
   void ran(double seconds) {
     if (budget_ < 0.0) {
+      first_ = seconds;
       budget_ = std::max(share_ * seconds, floor_);
     } else {
       spent_ += seconds;
@@ -700,16 +705,20 @@ class ExtraTime {
   bool allows_another() const {
     return share_ <= 0.0 || budget_ < 0.0 || spent_ + last_ <= budget_;
   }
+  /// Every run's time, the first included.
+  double total() const { return first_ + spent_; }
 
  private:
   double share_, floor_;
-  double budget_ = -1.0, spent_ = 0.0, last_ = 0.0;
+  double budget_ = -1.0, first_ = 0.0, spent_ = 0.0, last_ = 0.0;
 };
 
-/// One tet mesh of `model`: TetGen (in more facet orders when needed), then the sliver passes
-/// while `extra` allows them. Fills `info` except the census and the surface bisection figures.
+/// One tet mesh of `model` (with `interior_points` as isolated vertices): TetGen (in more facet
+/// orders when needed), then the sliver passes while `extra` allows them. Fills `info` except
+/// the census and the surface bisection figures.
 ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOptions& options,
-                               Logger& log, TetmeshRun& info, ExtraTime& extra) {
+                               Logger& log, TetmeshRun& info, ExtraTime& extra,
+                               const std::vector<Vec3>& interior_points = {}) {
   auto start = std::chrono::steady_clock::now();
   tetgenio in;
   PlcMap map = build_plc(model, in, options.region_max_volume);
@@ -718,6 +727,15 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   // Point sizes (switch m): one per point; the sliver points added below get none (0).
   const std::vector<double> plc_sizes =
       options.sized() ? point_sizes(model, map, options) : std::vector<double>{};
+  // The PLC points, then `points` as isolated vertices (sizes: see set_point_sizes).
+  auto set_points = [&](const std::vector<Vec3>& points) {
+    delete[] in.pointlist;
+    in.numberofpoints = plc_points + static_cast<int>(points.size());
+    in.pointlist = new REAL[3 * in.numberofpoints];
+    std::copy(plc_coordinates.begin(), plc_coordinates.end(), in.pointlist);
+    for (size_t e = 0; e < points.size(); ++e)
+      for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = points[e][d];
+  };
   auto set_point_sizes = [&]() {
     if (plc_sizes.empty()) return;
     delete[] in.pointmtrlist;
@@ -726,6 +744,7 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
     std::fill(in.pointmtrlist, in.pointmtrlist + in.numberofpoints, 0.0);
     std::copy(plc_sizes.begin(), plc_sizes.end(), in.pointmtrlist);
   };
+  if (!interior_points.empty()) set_points(interior_points);
   set_point_sizes();
   info.plc_seconds = seconds_since(start);
   info.region_points = map.region_points;
@@ -821,11 +840,12 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
   }
   if (current != best_order) use_order(best_order);
   info.tetgen_output = best_printed;
+  info.tetgen_tets_below = dihedral_census(best.mesh);
 
   // Sliver passes (see sliver_points), when the surface is kept and a dihedral bound is asked.
   const bool chase_slivers = options.keep_surface && options.radius_edge_ratio > 0.0 && options.min_dihedral_deg > 0.0;
   std::unique_ptr<TriangleTree> surfaces;
-  std::vector<Vec3> kept;  // interior points of the kept mesh, added against slivers
+  std::vector<Vec3> kept = interior_points;  // interior points of the kept mesh
   double best_angle = min_dihedral(best.mesh);
   for (int pass = 1; chase_slivers && pass <= effective.sliver_passes && best_angle < options.min_dihedral_deg; ++pass) {
     if (!extra.allows_another()) {
@@ -839,13 +859,7 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
     std::vector<Vec3> trial = kept;
     trial.insert(trial.end(), more.begin(), more.end());
     info.sliver_passes = pass;
-    // The PLC points, then the sliver points as isolated vertices.
-    delete[] in.pointlist;
-    in.numberofpoints = plc_points + static_cast<int>(trial.size());
-    in.pointlist = new REAL[3 * in.numberofpoints];
-    std::copy(plc_coordinates.begin(), plc_coordinates.end(), in.pointlist);
-    for (size_t e = 0; e < trial.size(); ++e)
-      for (int d = 0; d < 3; ++d) in.pointlist[3 * (plc_points + e) + d] = trial[e][d];
+    set_points(trial);
     set_point_sizes();
     tetgenio out;
     std::string printed;
@@ -866,11 +880,12 @@ ConvertedMesh mesh_with_tetgen(const StructuralModel& model, const TetmeshOption
     best_angle = angle;
     kept = std::move(trial);
     info.tetgen_output = printed;
-    info.sliver_points = static_cast<int>(kept.size());
   }
 
   info.steiner_points = static_cast<int>(best.mesh.vertices.size()) - plc_points;
   info.split_facets = best.split_facets;
+  info.sliver_points = static_cast<int>(kept.size());
+  best.interior_points = std::move(kept);
   return best;
 }
 
@@ -982,11 +997,19 @@ void require_volume_bound(const StructuralModel& model, const TetmeshOptions& op
   throw MesherError(message.str());
 }
 
+/// A mesh and what made it: the one before the surface bisection rounds is polished too.
+struct Candidate {
+  ConvertedMesh mesh;
+  TetmeshRun info;
+};
+
 /// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
 /// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
-/// angle rises. `best` and `info` become those of the last round kept.
+/// angle rises. `best` and `info` become those of the last round kept, `before_rounds` what
+/// they were before the first.
 void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
+                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
+                    std::optional<Candidate>& before_rounds) {
   const double bound = options.refine_surface_below_deg;
   if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
   double best_angle = min_dihedral(best.mesh);
@@ -1024,6 +1047,7 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
     bisected += split;
     trial.surface_rounds = round;
+    if (!before_rounds) before_rounds = Candidate{std::move(best), info};
     info = std::move(trial);
     best = std::move(mesh);
     best_angle = angle;
@@ -1039,6 +1063,60 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
              " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
              " deg: min dihedral " + number(best_angle) + " deg");
+}
+
+/// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
+/// interior points kept, to the higher bound; the mesh is kept when its smallest dihedral
+/// angle is no lower, no more triangles are split and the volume bound holds.
+void polish(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+            TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
+  const double bound = options.polish_dihedral_deg;
+  if (!options.keep_surface || !(options.radius_edge_ratio > 0.0) ||
+      !(options.min_dihedral_deg > 0.0) || !(bound > options.min_dihedral_deg) ||
+      is_needle_filled(info.surface_needles, model))
+    return;
+  if (!extra.allows_another()) {
+    info.extra_time_spent = true;
+    return;
+  }
+  const StructuralModel& meshed = info.refined_model ? *info.refined_model : model;
+  TetmeshOptions polished = options;
+  polished.min_dihedral_deg = bound;
+  TetmeshRun trial;
+  ConvertedMesh mesh;
+  try {
+    mesh = mesh_with_tetgen(meshed, polished, log, trial, extra, best.interior_points);
+  } catch (const MesherError& e) {
+    log.debug(std::string("tetmesh: polish run failed (") + e.what() + "); keeping the mesh");
+    return;
+  }
+  info.extra_time_spent = info.extra_time_spent || trial.extra_time_spent;
+  const double before = min_dihedral(best.mesh), after = min_dihedral(mesh.mesh);
+  const auto under = [](const VolumeMesh& m) { return dihedral_census(m)[kPolishCensusBin]; };
+  const bool kept = after >= before && mesh.split_facets <= best.split_facets &&
+                    (!options.bounded() || tets_over_bound(mesh.mesh, options).empty());
+  log.debug("tetmesh: polish run to " + number(bound) + " deg: min dihedral " + number(after) +
+            " deg (was " + number(before) + "), tets under " +
+            number(kDihedralCensusDeg[kPolishCensusBin]) + " deg " +
+            std::to_string(under(mesh.mesh)) + " (were " + std::to_string(under(best.mesh)) +
+            (kept ? "): kept" : "): dropped"));
+  if (!kept) return;
+  info.polished = true;
+  info.switches = trial.switches;
+  info.steiner_points = trial.steiner_points;
+  info.split_facets = trial.split_facets;
+  info.sliver_passes += trial.sliver_passes;
+  info.sliver_points = trial.sliver_points;
+  info.tetgen_output = std::move(trial.tetgen_output);
+  best = std::move(mesh);
+}
+
+/// True when `a` is the better tet mesh: a larger smallest dihedral angle, else fewer tets under
+/// the census' 15°.
+bool better(const VolumeMesh& a, const VolumeMesh& b) {
+  const double angle_a = min_dihedral(a), angle_b = min_dihedral(b);
+  if (angle_a != angle_b) return angle_a > angle_b;
+  return dihedral_census(a)[kPolishCensusBin] < dihedral_census(b)[kPolishCensusBin];
 }
 
 }  // namespace
@@ -1064,6 +1142,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
                          " out of range: 0 (TetGen's own) or in (90, 180) degrees");
   if (!(options.sliver_passes >= 0 && options.sliver_passes <= 10))
     throw ParameterError("sliver passes " + std::to_string(options.sliver_passes) + " out of range [0, 10]");
+  if (!(options.polish_dihedral_deg >= 0.0 && options.polish_dihedral_deg < 70.0))
+    throw ParameterError("polish dihedral angle " + number(options.polish_dihedral_deg) +
+                         " out of range [0, 70)");
   if (!(options.refine_surface_below_deg >= 0.0 && options.refine_surface_below_deg < 70.0))
     throw ParameterError("surface refinement angle " + number(options.refine_surface_below_deg) + " out of range [0, 70)");
   if (!(options.refine_surface_rounds >= 0 && options.refine_surface_rounds <= 10))
@@ -1082,8 +1163,26 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   info = TetmeshRun{};
   ExtraTime extra(options.extra_time, options.min_extra_seconds);
   ConvertedMesh best = mesh_with_tetgen(model, options, log, info, extra);
+  const auto first_tets_below = info.tetgen_tets_below;  // TetGen's own mesh, for the report
   refine_for_size(model, options, log, info, best, extra);
-  refine_surface(model, options, log, info, best, extra);
+  std::optional<Candidate> before_rounds;
+  refine_surface(model, options, log, info, best, extra, before_rounds);
+  polish(model, options, log, info, best, extra);
+  // The rounds raised the minimum, but their finer triangles can leave the polish less to gain:
+  // the mesh before them is polished too and the better of the two kept.
+  if (before_rounds) {
+    polish(model, options, log, before_rounds->info, before_rounds->mesh, extra);
+    info.extra_time_spent = info.extra_time_spent || before_rounds->info.extra_time_spent;
+    if (better(before_rounds->mesh.mesh, best.mesh)) {
+      log.info("tetmesh: the surfaces as given polish better than their bisection (min dihedral " +
+               number(min_dihedral(before_rounds->mesh.mesh)) + " deg): bisection dropped");
+      before_rounds->info.extra_time_spent = info.extra_time_spent;
+      info = std::move(before_rounds->info);
+      best = std::move(before_rounds->mesh);
+    }
+  }
+  info.tetgen_seconds = extra.total();
+  info.tetgen_tets_below = first_tets_below;
   if (info.extra_time_spent)
     log.info("tetmesh: sliver passes and surface bisection stopped after " +
              number(options.extra_time) + " x the first TetGen run (or " +

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/geometry/size_field.h"
+#include "framework/geometry/volume_quality.h"
 #include "framework/host/log.h"
 #include "framework/model/structural_model.h"
 #include "framework/model/volume_mesh.h"
@@ -88,6 +89,12 @@ struct TetmeshOptions {
   double refine_surface_below_deg = 6.0;
   /// At most this many bisection rounds (each one halves the edges it splits).
   int refine_surface_rounds = 4;
+  /// A last TetGen run to this dihedral bound (`q<ratio>/<angle>`, degrees), with its own
+  /// sliver passes, on the surfaces and interior points the runs above kept: TetGen splits the
+  /// tets it can reach (off the kept surfaces) up to this bound, where the decisions above
+  /// chase min_dihedral_deg. Kept only when its smallest dihedral angle is no lower, no more
+  /// triangles are split and the volume bound holds. 0, or not above min_dihedral_deg: none.
+  double polish_dihedral_deg = 15.0;
   /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
   /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
   /// many rounds. Under Y TetGen adds no point inside the diametral ball of a surface triangle,
@@ -173,6 +180,9 @@ struct TetmeshRun {
   int bisected_edges = 0;                 // surface edges they split
   int size_rounds = 0;                    // surface bisection rounds for max_volume
   int size_bisected_edges = 0;            // surface edges they split
+  bool polished = false;                  // the polish run's mesh was kept
+  /// VolumeQuality::tets_below_deg of TetGen's first mesh, before passes, rounds and polish.
+  std::array<long, kDihedralCensusDeg.size()> tetgen_tets_below{};
   /// The model with the bisected surfaces TetGen meshed last (the output triangles are its
   /// triangles); null when no round was kept.
   std::shared_ptr<const StructuralModel> refined_model;

@@ -26,7 +26,19 @@ TEST(TetmeshModule, SetsTheVolumeAndReport) {
   module.run(context, Parameters(module.parameters(), {{"quality", "1.4"}}));
   ASSERT_TRUE(context.volume);
   const auto& report = context.report.at("tetmesh");
-  EXPECT_EQ(report.at("switches"), "pq1.4/10o/150AYJQ");
+  EXPECT_EQ(report.at("switches"),
+            report.at("polished").get<bool>() ? "pq1.4/15o/150AYJQ" : "pq1.4/10o/150AYJQ");
+  // The dihedral histogram: cumulative counts, TetGen's first mesh and the output.
+  const auto& below = report.at("tets_below_deg");
+  for (const char* when : {"tetgen", "final"}) {
+    long previous = 0;
+    for (const char* mark : {"5", "10", "15", "20", "30"}) {
+      const long n = below.at(when).at(mark).get<long>();
+      EXPECT_GE(n, previous) << when << " " << mark;
+      previous = n;
+    }
+  }
+  EXPECT_LE(below.at("final").at("15").get<long>(), below.at("tetgen").at("15").get<long>());
   EXPECT_EQ(report.at("tets").get<long>(), static_cast<long>(context.volume->tets.size()));
   EXPECT_EQ(report.at("regions_meshed"), 2);
   EXPECT_EQ(report.at("nonconforming_triangles"), 0);

@@ -124,7 +124,8 @@ TEST(Tetrahedralize, BoxCutByHorizonGivesTwoConformalRegions) {
   testing::internal::CaptureStdout();
   const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log, &run);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
-  EXPECT_EQ(run.switches, "pq1.5/10o/150AYJQ");
+  // The switches of the run whose mesh was kept: the polish run's (to 15°) or the first's.
+  EXPECT_EQ(run.switches, run.polished ? "pq1.5/15o/150AYJQ" : "pq1.5/10o/150AYJQ");
   EXPECT_EQ(run.split_facets, 0);
   EXPECT_EQ(run.input_facets, model.num_triangles());
   expect_valid_mesh(model, mesh);
@@ -414,7 +415,8 @@ TEST(Tetrahedralize, TetgenOutputGoesToTheDebugLogNotStdout) {
   TetmeshRun run;
   tetrahedralize(model, TetmeshOptions{}, log, &run);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
-  EXPECT_EQ(run.switches, "pq1.5/10o/150AYJ");  // no Q at the debug level: TetGen's full log
+  // No Q at the debug level: TetGen's full log.
+  EXPECT_EQ(run.switches, run.polished ? "pq1.5/15o/150AYJ" : "pq1.5/10o/150AYJ");
   EXPECT_NE(run.tetgen_output.find("Delaunay"), std::string::npos) << run.tetgen_output;
   std::rewind(sink);
   std::string logged;
@@ -529,6 +531,40 @@ TEST(Tetrahedralize, SliverPassesStopWhenTheirTimeIsSpent) {
   EXPECT_GT(measure_volume(mesh).min_dihedral_deg, 5.0);
   options.extra_time = -1.0;
   EXPECT_THROW(tetrahedralize(model, options, log), ParameterError);
+}
+
+TEST(Tetrahedralize, PolishRunLeavesFewerTetsUnder15DegreesAndNoLowerMinimum) {
+  // The defaults chase 10°; the polish run takes TetGen's refinement on to 15° where it can
+  // reach (off the kept surfaces) and is kept only when the minimum does not drop.
+  const StructuralModel model = read_model(test::bundled_model("folded_layers.ts"));
+  Logger log = quiet_logger();
+  TetmeshOptions options;
+  options.polish_dihedral_deg = 0.0;
+  TetmeshRun plain_run;
+  const VolumeMesh plain = tetrahedralize(model, options, log, &plain_run);
+  options.polish_dihedral_deg = TetmeshOptions{}.polish_dihedral_deg;
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  const VolumeQuality q0 = measure_volume(plain), q1 = measure_volume(mesh);
+  std::fprintf(
+      stderr,
+      "[figures] folded_layers: under 15 deg %ld of %ld tets (min %.2f) -> %ld of %ld (min %.2f)\n",
+      q0.tets_below_deg[2], q0.tets, q0.min_dihedral_deg, q1.tets_below_deg[2], q1.tets,
+      q1.min_dihedral_deg);
+  EXPECT_FALSE(plain_run.polished);
+  EXPECT_TRUE(run.polished);
+  EXPECT_GE(q1.min_dihedral_deg, q0.min_dihedral_deg);
+  EXPECT_GT(q0.tets_below_deg[2], 20);
+  EXPECT_LE(q1.tets_below_deg[2] * 10, q0.tets_below_deg[2]);
+  // The report's "before" is TetGen's first mesh, the same with or without the polish.
+  EXPECT_EQ(run.tetgen_tets_below, plain_run.tetgen_tets_below);
+  EXPECT_NE(run.switches.find("/15"), std::string::npos);
+  expect_valid_mesh(model, mesh);
+  // A polish bound not above the chased one makes no run.
+  options.polish_dihedral_deg = options.min_dihedral_deg;
+  TetmeshRun none;
+  tetrahedralize(model, options, log, &none);
+  EXPECT_FALSE(none.polished);
 }
 
 TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
@@ -850,6 +886,11 @@ TEST(Tetrahedralize, OptionsOutOfRangeAreParameterErrors) {
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
   o = TetmeshOptions{};
   o.refine_surface_rounds = 11;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.polish_dihedral_deg = -1;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o.polish_dihedral_deg = 70;
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
 }
 

@@ -43,6 +43,28 @@ TEST(VolumeQuality, CornerTetAnglesAndVolume) {
   EXPECT_NEAR(q.max_radius_edge, std::sqrt(3.0) / 2.0, 1e-12);
 }
 
+TEST(VolumeQuality, DihedralCensusCountsTheTetsUnderEachAngle) {
+  // Corner tets flattened to apex height h: the smallest dihedral angle, at the edge opposite the
+  // apex, is atan(h √2); the unflattened corner's is acos(1/√3) = 54.7°.
+  VolumeMesh m;
+  for (double angle : {4.0, 12.0, 25.0, 54.7356}) {
+    const double h = std::tan(angle * M_PI / 180.0) / std::sqrt(2.0);
+    const int base = static_cast<int>(m.vertices.size());
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, h)})
+      m.vertices.push_back(p + Vec3(3.0 * base, 0, 0));
+    m.tets.push_back({base, base + 1, base + 2, base + 3});
+    m.tet_region.push_back(0);
+    EXPECT_NEAR(min_dihedral_angle_deg(m.vertices[base], m.vertices[base + 1], m.vertices[base + 2],
+                                       m.vertices[base + 3]),
+                angle, 1e-3);
+  }
+  // Marks 5, 10, 15, 20, 30°: cumulative counts.
+  const std::array<long, 5> expected = {1, 1, 2, 2, 3};
+  EXPECT_EQ(dihedral_census(m), expected);
+  EXPECT_EQ(measure_volume(m).tets_below_deg, expected);
+  EXPECT_EQ(dihedral_census(VolumeMesh{}), (std::array<long, 5>{}));
+}
+
 TEST(VolumeQuality, FlatAndInvertedTetsAreCounted) {
   VolumeMesh m = one_tet(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1));
   m.vertices.push_back(Vec3(1, 1, 0));       // 4: coplanar with 0, 1, 2
