@@ -1,6 +1,7 @@
 #include "io/gmsh_format.h"
 
 #include <algorithm>
+#include <map>
 
 #include "io/format_common.h"
 #include "io/gmsh_reader.h"
@@ -52,6 +53,7 @@ struct MshContent {
   std::vector<MshEntity> surfaces;         // triangles, one entity per surface part
   std::vector<MshEntity> volumes;          // tets, one entity per region
   std::vector<std::string> surface_names;  // physical name per surface id (tag = id + 1)
+  std::vector<std::string> piece_names;    // name per surface entity (tag = index + 1), or none
   std::vector<std::string> region_names;
   const std::vector<Edge>* edges = nullptr;  // contact segments (line elements)
   std::vector<MshEntity> curves;             // one entity per contact id
@@ -162,6 +164,14 @@ void write_content(const MshContent& c, std::ostream& out, int precision) {
   write_blocks(c.surfaces, 2, 2, triangle);
   write_blocks(c.volumes, 3, 4, tet);
   out << "$EndElements\n";
+  // The pieces' names in a section of voroseal's own: Gmsh and meshio skip sections they do not
+  // know, and the physical groups stay one per surface.
+  if (!c.piece_names.empty()) {
+    out << "$VorosealPieces\n" << c.piece_names.size() << "\n";
+    for (size_t p = 0; p < c.piece_names.size(); ++p)
+      out << p + 1 << ' ' << quoted_name(c.piece_names[p], "piece_" + std::to_string(p)) << "\n";
+    out << "$EndVorosealPieces\n";
+  }
 }
 
 // Id per element clamped to >= 0, and a name list long enough for every id.
@@ -182,13 +192,13 @@ std::vector<int> ids_with_names(const std::vector<int>& ids, const std::vector<s
   return out;
 }
 
-// Surface entities of a volume mesh: one per piece (entity tag = part + 1) when every piece
-// lies on one surface, else one per surface; physical tag = surface + 1.
+// Surface entities of a volume mesh: one per piece (entity tag = part + 1, `pieces` set) when
+// every piece lies on one surface, else one per surface; physical tag = surface + 1.
 std::vector<MshEntity> surface_entities(const VolumeMesh& mesh, const std::vector<int>& surface,
-                                        size_t surfaces) {
+                                        size_t surfaces, bool& pieces) {
   const std::vector<int>& part = mesh.triangle_part;
   std::vector<int> surface_of_part;
-  bool pieces = part.size() == surface.size() && !part.empty();
+  pieces = part.size() == surface.size() && !part.empty();
   for (size_t f = 0; pieces && f < part.size(); ++f) {
     if (part[f] < 0) {
       pieces = false;
@@ -222,11 +232,36 @@ SurfaceSoup read_msh(const TextSource& source) {
   soup.triangles = std::move(d.triangles);
   std::vector<std::string> names;
   const std::vector<int> ids = ids_and_names(d.triangle_tag, 2, d, "surface_", names);
-  group_triangles_by_id(soup, ids, names, "surface_");
-  // A volume mesh's surfaces are named "<kind>:<name>".
-  for (SurfaceGroup& g : soup.groups) {
-    split_kind_prefixed_name(g.name, g.kind, g.name);
-    g.interface = g.name;
+  const bool named_pieces =
+      !d.piece_names.empty() && std::all_of(d.triangle_entity.begin(), d.triangle_entity.end(),
+                                            [&](int e) { return d.piece_names.count(e) > 0; });
+  if (!named_pieces) {
+    group_triangles_by_id(soup, ids, names, "surface_");
+    // Surfaces are named "<kind>:<name>" by voroseal.
+    for (SurfaceGroup& g : soup.groups) {
+      split_kind_prefixed_name(g.name, g.kind, g.name);
+      g.interface = g.name;
+    }
+  } else {
+    // Written by voroseal: a group per piece (surface entity), of the surface its physical names.
+    // Pieces numbered densely in entity tag order (tags may be anything a file says).
+    std::map<int, int> index_of;
+    std::vector<std::string> piece_names;
+    for (const auto& [entity, name] : d.piece_names) {
+      index_of[entity] = static_cast<int>(piece_names.size());
+      piece_names.push_back(name);
+    }
+    std::vector<int> pieces;
+    for (int e : d.triangle_entity) pieces.push_back(index_of.at(e));
+    group_triangles_by_id(soup, pieces, piece_names, "piece_");
+    std::vector<bool> set(soup.groups.size(), false);
+    for (size_t f = 0; f < soup.triangles.size(); ++f) {
+      SurfaceGroup& g = soup.groups[soup.triangle_group[f]];
+      const std::string& surface = names[ids[f]];
+      if (set[soup.triangle_group[f]]) continue;
+      set[soup.triangle_group[f]] = true;
+      split_kind_prefixed_name(surface, g.kind, g.interface);
+    }
   }
   require_triangles(soup);
   return soup;
@@ -250,8 +285,12 @@ VolumeMesh read_msh_volume(const TextSource& source) {
   if (std::all_of(d.triangle_entity.begin(), d.triangle_entity.end(), [](int e) { return e > 0; }))
     for (int e : d.triangle_entity) {
       mesh.triangle_part.push_back(e - 1);
-      while (static_cast<int>(mesh.part_names.size()) < e)
-        mesh.part_names.push_back("part_" + std::to_string(mesh.part_names.size()));
+      while (static_cast<int>(mesh.part_names.size()) < e) {
+        const int tag = static_cast<int>(mesh.part_names.size()) + 1;
+        const auto named = d.piece_names.find(tag);
+        mesh.part_names.push_back(named != d.piece_names.end() ? named->second
+                                                               : "part_" + std::to_string(tag - 1));
+      }
     }
   mesh.tets = std::move(d.tets);
   mesh.tet_region = ids_and_names(d.tet_tag, 3, d, "region_", mesh.region_names);
@@ -270,15 +309,29 @@ VolumeMesh read_msh_volume(const TextSource& source) {
 
 void write_msh(const StructuralModel& model, std::ostream& out, int precision) {
   const ModelTriangles t = flatten(model);
-  std::vector<std::string> surface_names, region_names;
-  for (const SurfacePart& p : model.parts) surface_names.push_back(p.name);
+  // One physical group per surface (interface), named "<kind>:<name>" as in volume meshes; one
+  // entity per part, named in $VorosealPieces.
+  std::vector<std::string> surface_names, piece_names, region_names;
+  for (const Interface& i : model.interfaces)
+    surface_names.push_back(kind_prefixed_name(i.kind, i.name));
+  for (const SurfacePart& p : model.parts) piece_names.push_back(p.name);
   for (const Region& r : model.regions) region_names.push_back(r.name);
   const std::vector<Tetrahedron> no_tets;
   MshContent c{model.vertices, model.frame.origin, t.triangles, no_tets};
-  c.surfaces = entity_per_id(t.part, surface_names.size());
+  c.surfaces = entity_per_id(t.part, piece_names.size());
+  for (size_t p = 0; p < model.parts.size(); ++p) {
+    const int i = model.parts[p].interface;
+    if (i < 0) {  // a part outside every interface gets a group of its own
+      c.surfaces[p].physical = static_cast<int>(surface_names.size()) + 1;
+      surface_names.push_back(kind_prefixed_name(SurfaceKind::Unknown, model.parts[p].name));
+    } else {
+      c.surfaces[p].physical = i + 1;
+    }
+  }
   c.volumes = entity_per_id({}, region_names.size());
-  c.surface_names = surface_names;
-  c.region_names = region_names;
+  c.surface_names = std::move(surface_names);
+  c.piece_names = std::move(piece_names);
+  c.region_names = std::move(region_names);
   write_content(c, out, precision);
 }
 
@@ -297,7 +350,14 @@ void write_msh_volume(const VolumeMesh& mesh, std::ostream& out, int precision) 
   region =
       ids_with_names(region, mesh.region_names, mesh.region_names.size(), "region_", region_names);
   MshContent c{mesh.vertices, mesh.frame.origin, mesh.triangles, mesh.tets};
-  c.surfaces = surface_entities(mesh, surface, surface_names.size());
+  bool pieces = false;
+  c.surfaces = surface_entities(mesh, surface, surface_names.size(), pieces);
+  if (pieces)
+    for (const MshEntity& e : c.surfaces) {
+      c.piece_names.resize(std::max<size_t>(c.piece_names.size(), e.tag));
+      c.piece_names[e.tag - 1] =
+          e.tag - 1 < static_cast<int>(mesh.part_names.size()) ? mesh.part_names[e.tag - 1] : "";
+    }
   c.volumes = entity_per_id(region, region_names.size());
   c.surface_names = std::move(surface_names);
   c.region_names = std::move(region_names);

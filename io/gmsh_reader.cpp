@@ -83,6 +83,8 @@ class MshParser {
       mesh_format();
     else if (name == "PhysicalNames")
       physical_names();
+    else if (name == "VorosealPieces")
+      piece_names();
     else if (name == "Entities" && !v41)  // a MSH 4 body under a 2.2 format line
       in_.fail("$Entities is a MSH 4 section, but the format line says 2.2");
     else if (name == "Entities")
@@ -217,12 +219,29 @@ class MshParser {
       in_.require(3, "a physical name (dim tag \"name\")");
       const int dim = tag(0, "dimension");
       const int t = tag(1, "physical tag");
-      const std::string_view text = in_.text();
-      const size_t open = text.find('"'), close = text.rfind('"');
-      if (open == std::string_view::npos || close == open)
-        in_.fail("a physical name must be quoted");
-      d_.physical_names[{dim, t}] = std::string(text.substr(open + 1, close - open - 1));
+      d_.physical_names[{dim, t}] = quoted("a physical name");
     }
+  }
+
+  // voroseal's own section (written after $Elements; other readers skip it): the name of each
+  // surface entity, a piece of a surface.
+  void piece_names() {
+    line("the number of piece names");
+    const long long n = count(0, "number of piece names", 5);
+    for (long long i = 0; i < n; ++i) {
+      line("a piece name (entity \"name\")");
+      in_.require(2, "a piece name (entity \"name\")");
+      const int t = tag(0, "entity tag");
+      d_.piece_names[t] = quoted("a piece name");
+    }
+  }
+
+  // The text between the first and the last double quote of the line.
+  std::string quoted(const std::string& what) {
+    const std::string_view text = in_.text();
+    const size_t open = text.find('"'), close = text.rfind('"');
+    if (open == std::string_view::npos || close == open) in_.fail(what + " must be quoted");
+    return std::string(text.substr(open + 1, close - open - 1));
   }
 
   // ---- $Entities (MSH 4.1) ----

@@ -33,6 +33,7 @@ struct MshData {
   std::vector<Tetrahedron> tets;
   std::vector<int> tet_tag;
   std::map<std::pair<int, int>, std::string> physical_names;  // (dim, tag)
+  std::map<int, std::string> piece_names;  // surface entity tag -> name ($VorosealPieces)
 };
 
 /// \throws InputError("file:line: message"), with "byte N: " leading the message for a value of

@@ -12,9 +12,13 @@
 #include <tuple>
 
 #include "framework/core/error.h"
+#include "framework/model/model_builder.h"
 #include "io/gmsh_format.h"
+#include "io/gmsh_reader.h"
 #include "io/model_io.h"
+#include "io/tag_names.h"
 #include "tests/io/io_test_util.h"
+#include "tests/support/test_models.h"
 
 namespace voroseal {
 namespace {
@@ -500,6 +504,55 @@ TEST(GmshVersions, FilesWrittenByGmsh) {
     SCOPED_TRACE(name);
     expect_same_volume(read_volume_mesh(dir.file(name)), ref, 1e-12);
   }
+}
+
+// A model's .msh: one physical group per surface ("<kind>:<name>"), one entity per piece (a
+// part), the pieces named in $VorosealPieces; read back, parts, surfaces and kinds are the same.
+TEST(GmshVersions, ModelGroupsAreSurfacesAndItsPiecesKeepTheirNames) {
+  SurfaceSoup soup = test::lattice_box(4, true);
+  soup.groups[0].kind = SurfaceKind::Boundary;
+  const StructuralModel m = build_model(soup);
+  ASSERT_GT(m.parts.size(), m.interfaces.size());  // some surface has several pieces
+  test::ScratchDir dir;
+  const std::string path = dir.file("model.msh");
+  write_model(m, path);
+  const MshData d = parse_msh(TextSource(path, test::read_text(path)));
+  std::set<std::string> groups, expected_groups, pieces, part_names;
+  for (const auto& [key, name] : d.physical_names)
+    if (key.first == 2) groups.insert(name);
+  for (const Interface& i : m.interfaces)
+    expected_groups.insert(kind_prefixed_name(i.kind, i.name));
+  EXPECT_EQ(groups, expected_groups);
+  for (const auto& [entity, name] : d.piece_names) pieces.insert(name);
+  for (const SurfacePart& p : m.parts) part_names.insert(p.name);
+  EXPECT_EQ(pieces, part_names);
+  const StructuralModel back = read_model(path);
+  std::set<std::string> back_parts;
+  for (const SurfacePart& p : back.parts) back_parts.insert(p.name);
+  EXPECT_EQ(back_parts, part_names);
+  ASSERT_EQ(back.interfaces.size(), m.interfaces.size());
+  std::set<std::pair<std::string, SurfaceKind>> kinds, back_kinds;
+  for (const Interface& i : m.interfaces) kinds.insert({i.name, i.kind});
+  for (const Interface& i : back.interfaces) back_kinds.insert({i.name, i.kind});
+  EXPECT_EQ(back_kinds, kinds);
+  EXPECT_EQ(back.regions.size(), m.regions.size());
+
+  // meshio (when installed) skips the pieces' section and sees one group per surface.
+  const std::string python = python_with_meshio();
+  if (python.empty()) GTEST_SKIP() << "python3 with meshio is not installed";
+  test::write_text(dir.file("read.py"),
+                   "import sys, meshio\n"
+                   "m = meshio.read(sys.argv[1])\n"
+                   "tags = set()\n"
+                   "for block, tag in zip(m.cells, m.cell_data['gmsh:physical']):\n"
+                   "    if block.type == 'triangle': tags.update(int(t) for t in tag)\n"
+                   "names = [n for n, (t, dim) in m.field_data.items() if dim == 2]\n"
+                   "open(sys.argv[2], 'w').write(f'{len(tags)} {len(names)}')\n");
+  ASSERT_TRUE(
+      runs(python + " '" + dir.file("read.py") + "' '" + path + "' '" + dir.file("out.txt") + "'"));
+  const std::string expected =
+      std::to_string(m.interfaces.size()) + " " + std::to_string(m.interfaces.size());
+  EXPECT_EQ(test::read_text(dir.file("out.txt")), expected);
 }
 
 TEST(GmshVersions, FilesWrittenByMeshio) {

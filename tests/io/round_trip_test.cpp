@@ -94,7 +94,7 @@ TEST_P(ModelRoundTrip, KeepsTopologyVolumesAndExactCoordinates) {
     EXPECT_NEAR(m2.signed_volume(m2.universe.sides), m1.signed_volume(m1.universe.sides),
                 1e-12 * std::abs(m1.signed_volume(m1.universe.sides)));
     // Formats that carry interface names and kinds keep them.
-    if (ext == ".obj" || ext == ".ts" || ext == ".ml") {
+    if (ext == ".obj" || ext == ".ts" || ext == ".ml" || ext == ".msh") {
       EXPECT_EQ(interface_kinds(m2), interface_kinds(m1));
     }
     if (ext == ".msh" || ext == ".obj") {
