@@ -13,6 +13,9 @@ namespace voroseal {
 /// The angles the dihedral census counts tets under (degrees): the bounds users and the issue
 /// bars quote (TetGen's default 10°, the 15° of "well-shaped", 5° of "sliver").
 constexpr std::array<double, 5> kDihedralCensusDeg = {5.0, 10.0, 15.0, 20.0, 30.0};
+/// Its 15° bin: the tets under it are the ones the stats line and the tetmesh polish count.
+constexpr size_t kCensusBin15Deg = 2;
+static_assert(kDihedralCensusDeg[kCensusBin15Deg] == 15.0);
 
 struct VolumeQuality {
   long vertices = 0;

@@ -65,16 +65,17 @@ nlohmann::json volume_json(const VolumeMesh& mesh, const VolumeQuality& q) {
 std::string volume_table(const VolumeMesh& mesh, const VolumeQuality& q) {
   std::string out;
   char line[384];
-  // The share of tets under 15° (kDihedralCensusDeg[2]), the bound of "well-shaped" tets.
-  const double under_15 = q.tets > 0 ? 100.0 * q.tets_below_deg[2] / q.tets : 0.0;
+  // The share of tets under 15°, the bound of "well-shaped" tets.
+  const long under = q.tets_below_deg[kCensusBin15Deg];
+  const double under_15 = q.tets > 0 ? 100.0 * under / q.tets : 0.0;
   std::snprintf(line, sizeof line,
                 "volume: %ld tets, %ld vertices, %d regions; dihedral min %.2f max %.2f deg, "
                 "%ld tets (%.3f %%) under 15 deg; radius-edge max %.3g mean %.3g; %ld flat or "
                 "inverted tets; %ld tets with a repeated vertex; %ld surface triangles not on a "
                 "tet\n",
-                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg,
-                q.tets_below_deg[2], under_15, q.max_radius_edge, q.mean_radius_edge,
-                q.nonpositive_tets, q.repeated_vertex_tets, q.nonconforming_triangles);
+                q.tets, q.vertices, q.regions, q.min_dihedral_deg, q.max_dihedral_deg, under,
+                under_15, q.max_radius_edge, q.mean_radius_edge, q.nonpositive_tets,
+                q.repeated_vertex_tets, q.nonconforming_triangles);
   out += line;
   for (size_t r = 0; r < q.region_volume.size(); ++r) {
     if (q.region_tets[r] == 0) continue;

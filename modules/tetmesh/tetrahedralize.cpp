@@ -32,8 +32,6 @@ namespace {
 
 // Relative rounding slack on --max-volume when the mesh is checked against it.
 constexpr double kVolumeBoundSlack = 1e-9;
-// The census bin the polish run's log line quotes (15°: the "well-shaped" bound).
-constexpr size_t kPolishCensusBin = 2;
 // TetGen's point sizes (switch m) bound the circumradius of the tets at a point; a regular tet
 // of edge H has circumradius H √6 / 4.
 const double kCircumradiusPerEdge = std::sqrt(6.0) / 4.0;
@@ -1092,12 +1090,12 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
   }
   info.extra_time_spent = info.extra_time_spent || trial.extra_time_spent;
   const double before = min_dihedral(best.mesh), after = min_dihedral(mesh.mesh);
-  const auto under = [](const VolumeMesh& m) { return dihedral_census(m)[kPolishCensusBin]; };
+  const auto under = [](const VolumeMesh& m) { return dihedral_census(m)[kCensusBin15Deg]; };
   const bool kept = after >= before && mesh.split_facets <= best.split_facets &&
                     (!options.bounded() || tets_over_bound(mesh.mesh, options).empty());
   log.debug("tetmesh: polish run to " + number(bound) + " deg: min dihedral " + number(after) +
             " deg (was " + number(before) + "), tets under " +
-            number(kDihedralCensusDeg[kPolishCensusBin]) + " deg " +
+            number(kDihedralCensusDeg[kCensusBin15Deg]) + " deg " +
             std::to_string(under(mesh.mesh)) + " (were " + std::to_string(under(best.mesh)) +
             (kept ? "): kept" : "): dropped"));
   if (!kept) return;
@@ -1116,7 +1114,7 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
 bool better(const VolumeMesh& a, const VolumeMesh& b) {
   const double angle_a = min_dihedral(a), angle_b = min_dihedral(b);
   if (angle_a != angle_b) return angle_a > angle_b;
-  return dihedral_census(a)[kPolishCensusBin] < dihedral_census(b)[kPolishCensusBin];
+  return dihedral_census(a)[kCensusBin15Deg] < dihedral_census(b)[kCensusBin15Deg];
 }
 
 }  // namespace

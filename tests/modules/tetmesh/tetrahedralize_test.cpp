@@ -549,13 +549,13 @@ TEST(Tetrahedralize, PolishRunLeavesFewerTetsUnder15DegreesAndNoLowerMinimum) {
   std::fprintf(
       stderr,
       "[figures] folded_layers: under 15 deg %ld of %ld tets (min %.2f) -> %ld of %ld (min %.2f)\n",
-      q0.tets_below_deg[2], q0.tets, q0.min_dihedral_deg, q1.tets_below_deg[2], q1.tets,
-      q1.min_dihedral_deg);
+      q0.tets_below_deg[kCensusBin15Deg], q0.tets, q0.min_dihedral_deg,
+      q1.tets_below_deg[kCensusBin15Deg], q1.tets, q1.min_dihedral_deg);
   EXPECT_FALSE(plain_run.polished);
   EXPECT_TRUE(run.polished);
   EXPECT_GE(q1.min_dihedral_deg, q0.min_dihedral_deg);
-  EXPECT_GT(q0.tets_below_deg[2], 20);
-  EXPECT_LE(q1.tets_below_deg[2] * 10, q0.tets_below_deg[2]);
+  EXPECT_GT(q0.tets_below_deg[kCensusBin15Deg], 20);
+  EXPECT_LE(q1.tets_below_deg[kCensusBin15Deg] * 10, q0.tets_below_deg[kCensusBin15Deg]);
   // The report's "before" is TetGen's first mesh, the same with or without the polish.
   EXPECT_EQ(run.tetgen_tets_below, plain_run.tetgen_tets_below);
   EXPECT_NE(run.switches.find("/15"), std::string::npos);
