@@ -8,6 +8,7 @@
 
 #include "framework/geometry/closest_point.h"
 #include "framework/geometry/triangle_quality.h"
+#include "modules/remesh/cleanup_classes.h"
 
 namespace voroseal::cleanup {
 
@@ -119,20 +120,24 @@ int smooth(Editor& e, const SurfaceProjector& projector, const std::vector<char>
       size[v] = target_size->sizes()[target_size->nearest(start[v])];
   }
   std::vector<char> moved(e.mesh().vertices.size(), 0);
-  Vec3 target, x;
   bool any = false;
-  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
-    const int v = static_cast<int>(vi);
-    if (only != nullptr && !(*only)[v]) continue;
-    if (!smoothing_target(e, v, target, size.empty() ? nullptr : &size)) continue;
-    for (double step : {1.0, 0.5, 0.25})
-      if (unfolded_move(e, projector, v, target, step, x)) {
+  std::vector<int> vertices;
+  for (size_t v = 0; v < e.mesh().vertices.size(); ++v)
+    if (only == nullptr || (*only)[v]) vertices.push_back(static_cast<int>(v));
+  sweep_classes(
+      independent_classes(e, vertices),
+      [&](int v, Vec3& x) {
+        Vec3 target;
+        if (!smoothing_target(e, v, target, size.empty() ? nullptr : &size)) return false;
+        for (double step : {1.0, 0.5, 0.25})
+          if (unfolded_move(e, projector, v, target, step, x)) return true;
+        return false;
+      },
+      [&](int v, const Vec3& x) {
         e.move(v, x, false);
         moved[v] = 1;
         any = true;
-        break;
-      }
-  }
+      });
   // After the first round only the triangles of the vertices put back have changed.
   std::vector<char> changed = moved;
   for (int round = 0; any && round < 16; ++round) {
@@ -252,6 +257,71 @@ bool stays_close(Editor& e, const SurfaceProjector& projector, int v, const Vec3
   return true;
 }
 
+namespace {
+
+// Where v's ring is best shaped among a few positions on its feature (see optimize_quality());
+// false when none is better. Reads v's ring only (sweep_classes()).
+bool quality_target(Editor& e, const SurfaceProjector& projector, int v, Vec3& best) {
+  const VertexFeature f = e.mesh().features[v];
+  if (f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) return false;
+  const std::vector<int>& ring = e.star(v);
+  if (ring.empty()) return false;
+  if (f.kind == VertexFeature::Surface) {
+    bool own = true;
+    for (int t : ring) own = own && e.mesh().triangle_part[t] == f.id;
+    if (!own) return false;
+  }
+  const Vec3 old = e.p(v);
+  const RingShape now = ring_shape(e, ring, {v, old});
+  // A triangle sharper than 30 degrees costs as much as a degenerate one, and none gets
+  // sharper than the sharpest one there.
+  auto score = [](const RingShape& r) { return r.q - r.sharp; };
+  double best_score = score(now) + 1e-3;
+  best = old;
+  std::vector<int> nb;
+  e.neighbours(v, nb);
+  const FidelityGuard fidelity(e, v, nb);
+  auto better = [&](const Vec3& x, double& at_least) {
+    if (!ring_unfolded_at(e, v, x) || !fidelity.allows(x)) return false;
+    const RingShape r = ring_shape(e, ring, {v, x});
+    if (score(r) <= at_least || r.smallest_sine < std::min(now.smallest_sine, 0.5)) return false;
+    at_least = score(r);
+    return true;
+  };
+  if (f.kind == VertexFeature::Contact) {
+    for (int w : nb) {
+      if (!along_contact(e, v, w)) continue;
+      for (double t : {0.03, 0.08, 0.15, 0.25}) {
+        const Vec3 x = projector.on_contact(f.id, old + t * (e.p(w) - old));
+        if (better(x, best_score)) best = x;
+      }
+    }
+  } else {
+    // Candidates in the tangent plane, the best one projected on the part (and checked again).
+    Vec3 normal = Vec3::Zero();
+    for (int t : ring) normal += e.normal(t);
+    if (normal.norm() == 0) return false;
+    normal.normalize();
+    Vec3 planar = old;
+    double planar_score = best_score;
+    for (int w : nb)
+      for (double t : {-0.12, -0.05, 0.05, 0.12, 0.2}) {
+        Vec3 step = t * (e.p(w) - old);
+        step -= step.dot(normal) * normal;
+        if (better(old + step, planar_score)) planar = old + step;
+      }
+    if (planar == old) return false;
+    const Vec3 x = projector.on_part(f.id, planar);
+    if (better(x, best_score)) best = x;
+  }
+  if (best == old) return false;
+  // The ring keeps to the input: no triangle middle strays farther from its part than the
+  // fidelity tolerance, or than it did (moves along a crease of a part cut it otherwise).
+  return e.tolerance() <= 0.0 || stays_close(e, projector, v, best);
+}
+
+}  // namespace
+
 int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_below) {
   std::vector<char> wanted(e.mesh().vertices.size(), 0);
   for (size_t t = 0; t < e.mesh().triangles.size(); ++t) {
@@ -260,67 +330,15 @@ int optimize_quality(Editor& e, const SurfaceProjector& projector, double q_belo
     if (measure_triangle(e.p(f[0]), e.p(f[1]), e.p(f[2])).q < q_below)
       for (int v : f) wanted[v] = 1;
   }
+  std::vector<int> vertices;
+  for (size_t v = 0; v < wanted.size(); ++v)
+    if (wanted[v]) vertices.push_back(static_cast<int>(v));
+  // The targets of a class in parallel, the checked moves (non-local: crossings) in order.
   int count = 0;
-  std::vector<int> nb;
-  for (size_t vi = 0; vi < e.mesh().vertices.size(); ++vi) {
-    const int v = static_cast<int>(vi);
-    const VertexFeature f = e.mesh().features[v];
-    if (!wanted[v] || f.kind == VertexFeature::Corner || (f.pinned && !e.is_bend(v))) continue;
-    const std::vector<int> ring = e.star(v);
-    if (ring.empty()) continue;
-    if (f.kind == VertexFeature::Surface) {
-      bool own = true;
-      for (int t : ring) own = own && e.mesh().triangle_part[t] == f.id;
-      if (!own) continue;
-    }
-    const Vec3 old = e.p(v);
-    const RingShape now = ring_shape(e, e.star(v), {v, old});
-    // A triangle sharper than 30 degrees costs as much as a degenerate one, and none gets
-    // sharper than the sharpest one there.
-    auto score = [](const RingShape& r) { return r.q - r.sharp; };
-    double best_score = score(now) + 1e-3;
-    Vec3 best = old;
-    e.neighbours(v, nb);
-    const FidelityGuard fidelity(e, v, nb);
-    auto better = [&](const Vec3& x, double& at_least) {
-      if (!ring_unfolded_at(e, v, x) || !fidelity.allows(x)) return false;
-      const RingShape r = ring_shape(e, e.star(v), {v, x});
-      if (score(r) <= at_least || r.smallest_sine < std::min(now.smallest_sine, 0.5)) return false;
-      at_least = score(r);
-      return true;
-    };
-    if (f.kind == VertexFeature::Contact) {
-      for (int w : nb) {
-        if (!along_contact(e, v, w)) continue;
-        for (double t : {0.03, 0.08, 0.15, 0.25}) {
-          const Vec3 x = projector.on_contact(f.id, old + t * (e.p(w) - old));
-          if (better(x, best_score)) best = x;
-        }
-      }
-    } else {
-      // Candidates in the tangent plane, the best one projected on the part (and checked again).
-      Vec3 normal = Vec3::Zero();
-      for (int t : ring) normal += e.normal(t);
-      if (normal.norm() == 0) continue;
-      normal.normalize();
-      Vec3 planar = old;
-      double planar_score = best_score;
-      for (int w : nb)
-        for (double t : {-0.12, -0.05, 0.05, 0.12, 0.2}) {
-          Vec3 step = t * (e.p(w) - old);
-          step -= step.dot(normal) * normal;
-          if (better(old + step, planar_score)) planar = old + step;
-        }
-      if (planar == old) continue;
-      const Vec3 x = projector.on_part(f.id, planar);
-      if (better(x, best_score)) best = x;
-    }
-    if (best == old) continue;
-    // The ring keeps to the input: no triangle middle strays farther from its part than the
-    // fidelity tolerance, or than it did (moves along a crease of a part cut it otherwise).
-    if (e.tolerance() > 0.0 && !stays_close(e, projector, v, best)) continue;
-    if (move_checked(e, v, best)) ++count;
-  }
+  sweep_classes(
+      independent_classes(e, vertices),
+      [&](int v, Vec3& x) { return quality_target(e, projector, v, x); },
+      [&](int v, const Vec3& x) { count += move_checked(e, v, x) ? 1 : 0; });
   return count;
 }
 
