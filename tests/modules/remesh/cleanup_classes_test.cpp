@@ -66,9 +66,9 @@ TEST(CleanupClasses, SweepAppliesEveryProposalInClassOrder) {
   for (size_t i = 0; i < applied.size(); ++i) EXPECT_EQ(at[i], Vec3(applied[i], 0, 0));
 }
 
-// The box's vertices shaken inside their faces, then smoothed and optimised for Q: one thread
-// or two give the same positions, bit for bit, and a valid mesh.
-TEST(CleanupClasses, SmoothingAndQualityMovesDoNotDependOnTheThreads) {
+// The box's vertices shaken inside their faces, then smoothed and moved for Q: one thread or
+// two give the same positions, bit for bit, and a valid mesh.
+TEST(CleanupClasses, VertexMovesDoNotDependOnTheThreads) {
   const StructuralModel input = build_model(test::lattice_box(6, true));
   const SurfaceProjector projector(input);
   RemeshedSurface shaken = test::as_remeshed(input);
