@@ -497,13 +497,12 @@ class RemeshModule final : public Module {
     }
     if (options.sized()) {
       // Sizes finer than the input's triangles need finer triangles to be followed.
-      const double h = uniform_h;
       // The sizes change the seed count: the estimate counts the seeds they need, first on the
       // input's triangles (before any work), then on the triangles bisected for the sizes.
       auto sized_seeds = [&](const StructuralModel& model) {
-        return seed_count *
-               surface_sizing(model, options.sizes, h, options.gradation, options.size_field.get())
-                   .seed_factor;
+        return seed_count * surface_sizing(model, options.sizes, uniform_h, options.gradation,
+                                           options.size_field.get())
+                                .seed_factor;
       };
       const double estimate = sized_seeds(*context.model);
       require_memory(
@@ -514,7 +513,7 @@ class RemeshModule final : public Module {
       auto refined = std::make_shared<StructuralModel>(*context.model);
       const long budget = context.model->num_triangles() +
                           static_cast<long>(kInputTrianglesPerSizedSeed * estimate);
-      if (const int split = refine_for_sizes(*refined, options.sizes, h, options.gradation,
+      if (const int split = refine_for_sizes(*refined, options.sizes, uniform_h, options.gradation,
                                              options.size_field.get(), budget);
           split > 0) {
         context.log.info(

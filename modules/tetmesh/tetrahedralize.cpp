@@ -916,7 +916,6 @@ std::vector<long> tets_over_bound(const VolumeMesh& mesh, const TetmeshOptions& 
 void refine_for_size(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
                      TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
   if (!options.keep_surface || !options.bounded()) return;
-  double seconds = info.plc_seconds + info.tetgen_seconds;
   std::shared_ptr<const StructuralModel> refined;
   int bisected = 0, rounds = 0;
   for (int round = 1; round <= options.size_rounds; ++round) {
@@ -940,7 +939,6 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
                   e.what() + ")");
       break;
     }
-    seconds += trial.plc_seconds + trial.tetgen_seconds;
     log.debug("tetmesh: size round " + std::to_string(round) + ": " + std::to_string(over.size()) +
               " tets over their bound, " + std::to_string(split) + " surface edges split, " +
               std::to_string(next->num_triangles()) + " triangles");
@@ -954,7 +952,6 @@ void refine_for_size(const StructuralModel& model, const TetmeshOptions& options
   info.size_rounds = rounds;
   info.size_bisected_edges = bisected;
   info.refined_model = refined;
-  info.tetgen_seconds = seconds - info.plc_seconds;
   if (refined)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
              std::to_string(rounds) +
@@ -1011,7 +1008,6 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   const double bound = options.refine_surface_below_deg;
   if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
   double best_angle = min_dihedral(best.mesh);
-  double seconds = info.plc_seconds + info.tetgen_seconds;  // every round's, kept or not
   std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
   const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
   int bisected = 0;
@@ -1036,7 +1032,6 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
                 "); keeping the previous mesh");
       break;
     }
-    seconds += trial.plc_seconds + trial.tetgen_seconds;
     spent = spent || trial.extra_time_spent;
     const double angle = min_dihedral(mesh.mesh);
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
@@ -1056,7 +1051,6 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   info.refined_model = refined;
   info.size_rounds = size_rounds;
   info.size_bisected_edges = size_edges;
-  info.tetgen_seconds = seconds - info.plc_seconds;
   if (bisected > 0)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
              " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
@@ -1179,7 +1173,7 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       best = std::move(before_rounds->mesh);
     }
   }
-  info.tetgen_seconds = extra.total();
+  info.tetgen_seconds = extra.total();  // every run's, kept or not
   info.tetgen_tets_below = first_tets_below;
   if (info.extra_time_spent)
     log.info("tetmesh: sliver passes and surface bisection stopped after " +
