@@ -9,6 +9,7 @@
 
 #include "framework/geometry/point_cloud.h"
 #include "framework/geometry/size_field.h"
+#include "modules/remesh/local_optimization.h"
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_sampling.h"
 
@@ -199,14 +200,15 @@ int add_seeds_and_optimize(const StructuralModel& model, const std::vector<doubl
     lloyd.optimizer.kind = OptimizerKind::Lloyd;
     lloyd.optimizer.max_iterations = refine.lloyd_iterations;
     SeedOptimizationResult parted =
-        optimize_seeds(geometry, std::move(initial), lloyd, log, progress);
+        optimize_moving_seeds(geometry, std::move(initial), lloyd, log, progress);
     initial = std::move(parted.seeds);
     seeds.optimization_seconds += parted.optimization_seconds;
   }
   SeedOptions again = local;
   again.optimizer.max_iterations = refine.iterations;
   again.boundary_weight = seeds.alpha;
-  SeedOptimizationResult next = optimize_seeds(geometry, std::move(initial), again, log, progress);
+  SeedOptimizationResult next =
+      optimize_moving_seeds(geometry, std::move(initial), again, log, progress);
   seeds.seeds = std::move(next.seeds);
   seeds.optimization_seconds += next.optimization_seconds;
   return added;

@@ -24,6 +24,14 @@ std::uint64_t spread_bits(std::uint64_t x) {
   return x;
 }
 
+// ∫√ρ over a triangle: the edge-midpoint rule (exact for quadratics) on the square root of the
+// linear density.
+double root_mass_of(const TriangleRecord& rec) {
+  double root = 0.0;
+  for (int k = 0; k < 3; ++k) root += std::sqrt(0.5 * (rec.density[k] + rec.density[(k + 1) % 3]));
+  return rec.area * root / 3.0;
+}
+
 }  // namespace
 
 std::uint64_t morton_code(const Vec3& x, const BoundingBox& box) {
@@ -97,10 +105,7 @@ ModelGeometry::ModelGeometry(const StructuralModel& model, const std::vector<dou
     rec.normal = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
     area_ += rec.area;
     mass_ += rec.area * (rec.density[0] + rec.density[1] + rec.density[2]) / 3.0;
-    // Edge-midpoint rule (exact for quadratics) on the square root of the linear density.
-    double root = 0.0;
-    for (int k = 0; k < 3; ++k) root += std::sqrt(0.5 * (rec.density[k] + rec.density[(k + 1) % 3]));
-    root_mass_ += rec.area * root / 3.0;
+    root_mass_ += root_mass_of(rec);
     for (int k = 0; k < 3; ++k) {
       const std::uint64_t key = edge_key(f[k], f[(k + 1) % 3]);
       const auto it = line_contact.find(key);
@@ -115,6 +120,48 @@ ModelGeometry::ModelGeometry(const StructuralModel& model, const std::vector<dou
   if (!(area_ > 0.0)) throw ModelError("remesh: the model has zero area");
   if (has_density_ && !(mass_ > 0.0)) throw ParameterError("remesh: the density is zero everywhere");
   if (!has_density_) root_mass_ = area_;  // the same bits as the area (edge lengths derive from it)
+}
+
+ModelGeometry ModelGeometry::piece(const ModelGeometry& whole, const std::vector<int>& records) {
+  ModelGeometry g;
+  g.vertices_ = whole.vertices_;
+  g.vertex_corner_ = whole.vertex_corner_;
+  g.num_contacts_ = whole.num_contacts_;
+  g.num_parts_ = whole.num_parts_;
+  g.has_density_ = whole.has_density_;
+  g.records_.reserve(records.size());
+  g.record_of_.assign(whole.record_of_.size(), -1);
+  for (int r : records) {
+    g.record_of_[whole.records_[r].id] = static_cast<int>(g.records_.size());
+    g.records_.push_back(whole.records_[r]);
+  }
+  // A line edge whose reporting record was left out is reported by the first record kept.
+  std::unordered_map<std::uint64_t, bool> reported;  // line edge -> reported in the piece
+  for (const TriangleRecord& rec : g.records_)
+    for (int k = 0; k < 3; ++k)
+      if (rec.edge_contact[k] >= 0) {
+        bool& r = reported[edge_key(rec.v[k], rec.v[(k + 1) % 3])];
+        r = r || ((rec.edge_owner >> k) & 1u) != 0;
+      }
+  for (TriangleRecord& rec : g.records_) {
+    for (int k = 0; k < 3; ++k) {
+      if (rec.edge_contact[k] < 0 || ((rec.edge_owner >> k) & 1u) != 0) continue;
+      bool& r = reported[edge_key(rec.v[k], rec.v[(k + 1) % 3])];
+      if (r) continue;
+      r = true;
+      rec.edge_owner |= static_cast<std::uint8_t>(1u << k);
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (((rec.edge_owner >> k) & 1u) != 0) ++g.num_line_edges_;
+      g.bbox_.extend(rec.p[k]);
+    }
+    g.area_ += rec.area;
+    g.mass_ += rec.area * (rec.density[0] + rec.density[1] + rec.density[2]) / 3.0;
+    g.root_mass_ += root_mass_of(rec);
+  }
+  if (!(g.area_ > 0.0)) throw ModelError("remesh: the piece of the model has zero area");
+  if (!g.has_density_) g.root_mass_ = g.area_;
+  return g;
 }
 
 }  // namespace voroseal

@@ -40,6 +40,10 @@ class ModelGeometry {
   /// \throws ModelError when the model has no triangle or zero total area;
   ///         ParameterError when vertex_density has the wrong size or a negative/non-finite value.
   explicit ModelGeometry(const StructuralModel& model, const std::vector<double>& vertex_density = {});
+  /// The records `records` (ascending indices) of `whole` as a geometry of their own, in the
+  /// same order, for work on a piece of the model. Every line edge of the piece is reported by
+  /// one of its records. record_of() gives -1 for the triangles left out.
+  static ModelGeometry piece(const ModelGeometry& whole, const std::vector<int>& records);
 
   const std::vector<TriangleRecord>& triangles() const { return records_; }
   /// Index into triangles() of the triangle with flatten() index `id`.
