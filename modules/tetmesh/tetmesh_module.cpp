@@ -163,6 +163,12 @@ class TetmeshModule : public Module {
         "kept, kept when its smallest dihedral angle is no lower (0: none)"};
     polish.min = 0.0;
     polish.max = 60.0;
+    ParameterSpec smooth{
+        "smooth", ParameterType::Bool, TetmeshOptions{}.smooth_points,
+        "last, move the points inside the regions next to tets under " +
+            std::to_string(static_cast<int>(kSmoothBelowDeg)) +
+            " deg to where their tets' smallest dihedral angle is largest (each move kept only "
+            "where that angle rises; surfaces untouched)"};
     ParameterSpec size{
         "size-rounds", ParameterType::Int, 8,
         "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
@@ -178,8 +184,9 @@ class TetmeshModule : public Module {
             " s (0: no limit; the --max-volume rounds are never cut)"};
     extra.min = 0.0;
     extra.max = 1000.0;
-    return {output, quality, dihedral, volume, region_size, surface_sizes, size_field, gradation,
-            keep,   slivers, optimise, refine, rounds,      polish,        size,       extra};
+    return {output,     quality,   dihedral, volume,  region_size, surface_sizes,
+            size_field, gradation, keep,     slivers, optimise,    refine,
+            rounds,     polish,    smooth,   size,    extra};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -210,6 +217,7 @@ class TetmeshModule : public Module {
     options.polish_dihedral_deg = parameters.get_double("polish-dihedral");
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
+    options.smooth_points = parameters.get_bool("smooth");
     options.extra_time = parameters.get_double("extra-time");
 
     const auto start = std::chrono::steady_clock::now();
@@ -281,8 +289,11 @@ class TetmeshModule : public Module {
         {"extra_time_spent", run.extra_time_spent},
         {"sliver_points", run.sliver_points},
         {"polished", run.polished},
+        {"smoothed_points", run.smoothed_points},
         {"tets_below_deg",
-         {{"tetgen", census(run.tetgen_tets_below)}, {"final", census(quality.tets_below_deg)}}},
+         {{"tetgen", census(run.tetgen_tets_below)},
+          {"before_smoothing", census(run.smoothing_tets_below)},
+          {"final", census(quality.tets_below_deg)}}},
         {"surface_min_angle_deg", run.surface_min_angle_deg},
         {"surface_needles", run.surface_needles},
         {"slivers", slivers},
@@ -307,21 +318,26 @@ class TetmeshModule : public Module {
         {"mean_radius_edge", quality.mean_radius_edge},
         {"max_relative_volume_error", max_error},
         {"regions", regions},
-        {"seconds", {{"plc", run.plc_seconds}, {"tetgen", run.tetgen_seconds}, {"total", seconds}}},
+        {"seconds",
+         {{"plc", run.plc_seconds},
+          {"tetgen", run.tetgen_seconds},
+          {"smoothing", run.smoothing_seconds},
+          {"total", seconds}}},
     };
     context.log.info("tetmesh: " + std::to_string(quality.tets) + " tets in " + std::to_string(quality.regions) +
                      " regions, min dihedral " + std::to_string(quality.min_dihedral_deg) + " deg, max radius-edge " +
                      std::to_string(quality.max_radius_edge));
-    // The dihedral histogram before (TetGen's first mesh) and after the passes, rounds, polish.
-    std::string marks, first, last;
+    // The dihedral histogram of TetGen's first mesh, before the smoothing and in the end.
+    std::string marks, first, smoothing, last;
     for (size_t i = 0; i < kDihedralCensusDeg.size(); ++i) {
       const char* sep = i == 0 ? "" : "/";
       marks += sep + std::to_string(static_cast<int>(kDihedralCensusDeg[i]));
       first += sep + std::to_string(run.tetgen_tets_below[i]);
+      smoothing += sep + std::to_string(run.smoothing_tets_below[i]);
       last += sep + std::to_string(quality.tets_below_deg[i]);
     }
-    context.log.info("tetmesh: tets under " + marks + " deg: " + first + " from TetGen, " + last +
-                     " in the end");
+    context.log.info("tetmesh: tets under " + marks + " deg: " + first + " from TetGen, " +
+                     smoothing + " before the smoothing, " + last + " in the end");
     // A point of the model's local frame, in file coordinates, for the log.
     auto file_point = [](const Vec3& local, const Vec3& origin) {
       const Vec3 at = local + origin;

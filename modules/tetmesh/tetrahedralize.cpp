@@ -20,6 +20,7 @@
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
 #include "framework/model/surface_bisection.h"
+#include "modules/tetmesh/sliver_smoothing.h"
 #include "modules/tetmesh/surface_tags.h"
 #include "modules/tetmesh/tet_surface_edges.h"
 #include "modules/tetmesh/tetgen_plc.h"
@@ -297,6 +298,7 @@ struct ConvertedMesh {
   int split_facets = 0;       // model triangles not found whole among TetGen's faces
   long relabelled_tets = 0;   // tets TetGen left without a region
   std::vector<Vec3> interior_points;  // the sliver points TetGen got besides the PLC's
+  bool smoothed = false;              // smooth() ran on it (see there)
 };
 
 ConvertedMesh to_volume_mesh(const StructuralModel& model, const PlcMap& map, const tetgenio& in, int plc_points,
@@ -1057,11 +1059,41 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
              " deg: min dihedral " + number(best_angle) + " deg");
 }
 
+/// The smoothing of the interior points next to flat tets (TetmeshOptions::smooth_points), once
+/// per mesh: candidates are compared after it. `info` gets the census before it and the points
+/// moved; `seconds` sums every run's time.
+void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, ConvertedMesh& candidate,
+            double& seconds) {
+  if (candidate.smoothed) return;
+  candidate.smoothed = true;
+  VolumeMesh& mesh = candidate.mesh;
+  info.smoothing_tets_below = dihedral_census(mesh);
+  info.smoothed_points = 0;
+  if (!options.smooth_points) return;
+  const auto start = std::chrono::steady_clock::now();
+  SliverSmoothingOptions smoothing;
+  smoothing.below_deg = kSmoothBelowDeg;
+  for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
+    smoothing.region_volume_bound.push_back(options.volume_bound(r));
+  const double before = min_dihedral(mesh);
+  const SliverSmoothingResult moved = smooth_sliver_points(mesh, smoothing);
+  info.smoothed_points = moved.moved;
+  const double took = seconds_since(start);
+  seconds += took;
+  log.debug("tetmesh: smoothing moved " + std::to_string(moved.moved) + " of " +
+            std::to_string(moved.candidates) + " interior points in " +
+            std::to_string(moved.passes) + " passes: tets under " + number(kSmoothBelowDeg) +
+            " deg " + std::to_string(info.smoothing_tets_below[kCensusBin15Deg]) + " -> " +
+            std::to_string(dihedral_census(mesh)[kCensusBin15Deg]) + ", min dihedral " +
+            number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
+}
+
 /// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
 /// interior points kept, to the higher bound; the mesh is kept when its smallest dihedral
-/// angle is no lower, no more triangles are split and the volume bound holds.
+/// angle is no lower, no more triangles are split and the volume bound holds, both meshes
+/// judged after their smoothing.
 void polish(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-            TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra) {
+            TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra, double& smoothing_seconds) {
   const double bound = options.polish_dihedral_deg;
   if (!options.keep_surface || !(options.radius_edge_ratio > 0.0) ||
       !(options.min_dihedral_deg > 0.0) || !(bound > options.min_dihedral_deg) ||
@@ -1083,6 +1115,8 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
     return;
   }
   info.extra_time_spent = info.extra_time_spent || trial.extra_time_spent;
+  smooth(options, log, info, best, smoothing_seconds);
+  smooth(options, log, trial, mesh, smoothing_seconds);
   const double before = min_dihedral(best.mesh), after = min_dihedral(mesh.mesh);
   const auto under = [](const VolumeMesh& m) { return dihedral_census(m)[kCensusBin15Deg]; };
   const bool kept = after >= before && mesh.split_facets <= best.split_facets &&
@@ -1100,6 +1134,8 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
   info.sliver_passes += trial.sliver_passes;
   info.sliver_points = trial.sliver_points;
   info.tetgen_output = std::move(trial.tetgen_output);
+  info.smoothing_tets_below = trial.smoothing_tets_below;
+  info.smoothed_points = trial.smoothed_points;
   best = std::move(mesh);
 }
 
@@ -1159,11 +1195,14 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   refine_for_size(model, options, log, info, best, extra);
   std::optional<Candidate> before_rounds;
   refine_surface(model, options, log, info, best, extra, before_rounds);
-  polish(model, options, log, info, best, extra);
+  double smoothing_seconds = 0.0;
+  polish(model, options, log, info, best, extra, smoothing_seconds);
   // The rounds raised the minimum, but their finer triangles can leave the polish less to gain:
   // the mesh before them is polished too and the better of the two kept.
   if (before_rounds) {
-    polish(model, options, log, before_rounds->info, before_rounds->mesh, extra);
+    polish(model, options, log, before_rounds->info, before_rounds->mesh, extra, smoothing_seconds);
+    smooth(options, log, info, best, smoothing_seconds);
+    smooth(options, log, before_rounds->info, before_rounds->mesh, smoothing_seconds);
     info.extra_time_spent = info.extra_time_spent || before_rounds->info.extra_time_spent;
     if (better(before_rounds->mesh.mesh, best.mesh)) {
       log.info("tetmesh: the surfaces as given polish better than their bisection (min dihedral " +
@@ -1173,6 +1212,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       best = std::move(before_rounds->mesh);
     }
   }
+  smooth(options, log, info, best, smoothing_seconds);
+  info.smoothing_seconds = smoothing_seconds;
   info.tetgen_seconds = extra.total();  // every run's, kept or not
   info.tetgen_tets_below = first_tets_below;
   if (info.extra_time_spent)

@@ -19,6 +19,10 @@ namespace voroseal {
 /// TetmeshOptions::min_extra_seconds by default.
 constexpr double kMinExtraSeconds = 5.0;
 
+/// The tets whose interior points TetmeshOptions::smooth_points moves: those under the census'
+/// 15° (kCensusBin15Deg), the bound the polish run aims at.
+constexpr double kSmoothBelowDeg = kDihedralCensusDeg[kCensusBin15Deg];
+
 /// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
 constexpr int kMaxSizeRounds = 16;
 
@@ -95,6 +99,10 @@ struct TetmeshOptions {
   /// chase min_dihedral_deg. Kept only when its smallest dihedral angle is no lower, no more
   /// triangles are split and the volume bound holds. 0, or not above min_dihedral_deg: none.
   double polish_dihedral_deg = 15.0;
+  /// Last, the points inside the regions next to tets under kSmoothBelowDeg move to where the
+  /// smallest dihedral angle of their tets is largest, each move kept only when that angle rises
+  /// (sliver_smoothing.h): fewer flat tets, the minimum never lower, surfaces untouched.
+  bool smooth_points = true;
   /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
   /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
   /// many rounds. Under Y TetGen adds no point inside the diametral ball of a surface triangle,
@@ -181,6 +189,9 @@ struct TetmeshRun {
   int size_rounds = 0;                    // surface bisection rounds for max_volume
   int size_bisected_edges = 0;            // surface edges they split
   bool polished = false;                  // the polish run's mesh was kept
+  long smoothed_points = 0;               // interior points moved by the smoothing
+  /// VolumeQuality::tets_below_deg before the smoothing (after the polish).
+  std::array<long, kDihedralCensusDeg.size()> smoothing_tets_below{};
   /// VolumeQuality::tets_below_deg of TetGen's first mesh, before passes, rounds and polish.
   std::array<long, kDihedralCensusDeg.size()> tetgen_tets_below{};
   /// The model with the bisected surfaces TetGen meshed last (the output triangles are its
@@ -188,6 +199,7 @@ struct TetmeshRun {
   std::shared_ptr<const StructuralModel> refined_model;
   double plc_seconds = 0.0;               // building the PLC (region points included)
   double tetgen_seconds = 0.0;            // all runs
+  double smoothing_seconds = 0.0;         // the smoothing of the interior points
   std::string tetgen_output;              // what TetGen printed (captured) for the kept mesh
 };
 

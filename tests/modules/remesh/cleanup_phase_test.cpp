@@ -133,7 +133,9 @@ TEST(CleanupPhase, TheCleanUpReportsEveryPhaseItRanInScheduleOrder) {
     while (next < schedule.size() && p.name != schedule[next].name) ++next;
     ASSERT_LT(next, schedule.size()) << p.name << " out of order";
     EXPECT_LE(p.rounds, schedule[next].rounds) << p.name;
-    if (p.kept) EXPECT_LE(p.defects_after, p.defects_before) << p.name;
+    if (p.kept) {
+      EXPECT_LE(p.defects_after, p.defects_before) << p.name;
+    }
     ++next;
   }
   EXPECT_EQ(report.phases.back().name, "final: tips");

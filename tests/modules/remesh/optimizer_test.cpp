@@ -191,7 +191,9 @@ TEST(Optimizer, FixedSeedsStayAndTheOthersStillLowerTheEnergy) {
     ASSERT_EQ(r.seeds.size(), start.size());
     int moved = 0;
     for (size_t s = 0; s < start.size(); ++s) {
-      if (s % 2 == 0) EXPECT_EQ(r.seeds[s], start[s]) << "fixed seed " << s << " moved";
+      if (s % 2 == 0) {
+        EXPECT_EQ(r.seeds[s], start[s]) << "fixed seed " << s << " moved";
+      }
       moved += r.seeds[s] != start[s];
     }
     EXPECT_GT(moved, 100) << to_string(kind);

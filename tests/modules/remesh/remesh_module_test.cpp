@@ -196,7 +196,9 @@ TEST(RemeshModule, SizesPerSurfaceAreRealisedAndReported) {
   for (const nlohmann::json& s : surfaces) {
     const double graded = s.at("graded").get<double>();
     EXPECT_NEAR(s.at("realised").get<double>(), graded, 0.2 * graded) << s.dump();
-    if (s.at("name") == "horizon") EXPECT_EQ(s.at("asked").get<double>(), 0.1);
+    if (s.at("name") == "horizon") {
+      EXPECT_EQ(s.at("asked").get<double>(), 0.1);
+    }
   }
   EXPECT_THROW(run({{"size", "nothing=0.1"}}), ParameterError);
   EXPECT_THROW(run({{"size", "horizon"}}), ParameterError);

@@ -495,6 +495,7 @@ TEST(Tetrahedralize, SliverPassesRaiseTheSmallestDihedralAngle) {
   options.sliver_max_dihedral_deg = 0;
   options.sliver_passes = 0;
   options.refine_surface_below_deg = 0;
+  options.smooth_points = false;  // the passes alone (the smoothing moves their points too)
   const double without = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
   options.sliver_passes = TetmeshOptions{}.sliver_passes;
   TetmeshRun run;
@@ -576,6 +577,7 @@ TEST(Tetrahedralize, SliverPassesGradeAcrossAVeryThinLayer) {
   TetmeshOptions options;
   options.sliver_passes = 0;
   options.refine_surface_below_deg = 0;
+  options.smooth_points = false;  // the passes alone (the smoothing moves their points too)
   const double without = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
   options.sliver_passes = TetmeshOptions{}.sliver_passes;
   TetmeshRun run;

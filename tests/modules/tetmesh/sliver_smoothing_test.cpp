@@ -1,0 +1,129 @@
+#include "modules/tetmesh/sliver_smoothing.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+
+#include "framework/geometry/volume_quality.h"
+#include "framework/model/model_builder.h"
+#include "modules/tetmesh/tetrahedralize.h"
+#include "tests/support/test_models.h"
+
+namespace voroseal {
+namespace {
+
+// An octahedron (six surface vertices, its eight faces the surface triangles) around one
+// interior point at `centre`: eight tets, one per face; region "upper" above z = 0, "lower"
+// below.
+VolumeMesh octahedron(const Vec3& centre) {
+  VolumeMesh mesh;
+  mesh.vertices = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0),
+                   Vec3(0, 0, 1), Vec3(0, 0, -1), centre};
+  mesh.region_names = {"upper", "lower"};
+  for (int x : {0, 1})
+    for (int y : {2, 3})
+      for (int z : {4, 5}) {
+        Triangle f{x, y, z};
+        if (tet_volume(mesh.vertices[x], mesh.vertices[y], mesh.vertices[z], centre) < 0.0)
+          std::swap(f[1], f[2]);
+        mesh.triangles.push_back(f);
+        mesh.tets.push_back({f[0], f[1], f[2], 6});
+        mesh.tet_region.push_back(z == 4 ? 0 : 1);
+      }
+  return mesh;
+}
+
+double smallest_angle(const VolumeMesh& mesh) {
+  return measure_volume(mesh).min_dihedral_deg;
+}
+
+TEST(SliverSmoothing, MovesAnInteriorPointNextToAFaceBackInsideAndNeverASurfacePoint) {
+  // The point sits 0.05 from the face (+x, +y, +z): the tet on that face is nearly flat.
+  VolumeMesh mesh = octahedron(Vec3(0.5, 0.3, 0.15));
+  const double before = smallest_angle(mesh);
+  ASSERT_LT(before, 15.0);
+  const std::vector<Vec3> surface(mesh.vertices.begin(), mesh.vertices.begin() + 6);
+  const SliverSmoothingResult r = smooth_sliver_points(mesh, SliverSmoothingOptions{});
+  EXPECT_GE(r.moved, 1);
+  EXPECT_GE(r.candidates, 1);
+  // At the centre every tet is a corner of a cube: right angles and 54.7° (acos 1/√3).
+  EXPECT_GT(smallest_angle(mesh), 50.0);
+  EXPECT_LT(mesh.vertices[6].norm(), 0.05);
+  EXPECT_EQ(std::vector<Vec3>(mesh.vertices.begin(), mesh.vertices.begin() + 6), surface);
+  EXPECT_EQ(measure_volume(mesh).nonpositive_tets, 0);
+}
+
+TEST(SliverSmoothing, KeepsEveryTetWithinItsRegionsVolumeBound) {
+  // The point sits 0.05 from the face (+x, +y, -z); the lower tets are small (at most 0.075)
+  // and would grow to 1/6 each at the centre. Bounded there by their largest now, the point
+  // stops short of the centre and no lower tet passes the bound.
+  VolumeMesh mesh = octahedron(Vec3(0.1, 0.1, -0.75));
+  const double before = smallest_angle(mesh);
+  double lower = 0.0;
+  for (size_t t = 0; t < mesh.tets.size(); ++t)
+    if (mesh.tet_region[t] == 1)
+      lower = std::max(lower,
+                       tet_volume(mesh.vertices[mesh.tets[t][0]], mesh.vertices[mesh.tets[t][1]],
+                                  mesh.vertices[mesh.tets[t][2]], mesh.vertices[mesh.tets[t][3]]));
+  ASSERT_LT(lower, 0.1);
+  SliverSmoothingOptions options;
+  options.region_volume_bound = {0.0, lower};  // none in "upper"
+  const SliverSmoothingResult r = smooth_sliver_points(mesh, options);
+  EXPECT_GE(r.moved, 1);
+  const VolumeQuality q = measure_volume(mesh);
+  EXPECT_LE(q.region_max_volume[1], lower);
+  EXPECT_GT(smallest_angle(mesh), before);
+  EXPECT_GT(mesh.vertices[6].norm(), 0.3);  // short of the centre
+}
+
+TEST(SliverSmoothing, NeverLowersTheSmallestAngleAndGivesTheSameMeshOnAnyThreads) {
+  // TetGen's mesh of a box with a thin layer, without its own polish: interior points next to
+  // flat tets to move.
+  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
+  Logger log(LogLevel::Quiet);
+  TetmeshOptions options;
+  options.smooth_points = false;
+  options.polish_dihedral_deg = 0.0;
+  const VolumeMesh start = tetrahedralize(model, options, log);
+  const VolumeQuality before = measure_volume(start);
+  std::vector<VolumeMesh> results;
+  SliverSmoothingResult r;
+  for (int threads : {1, 2}) {
+    VolumeMesh mesh = start;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    r = smooth_sliver_points(mesh, SliverSmoothingOptions{});
+    omp_set_num_threads(saved);
+    results.push_back(std::move(mesh));
+  }
+  EXPECT_GT(r.moved, 0);
+  EXPECT_EQ(results[0].vertices, results[1].vertices);
+  const VolumeQuality after = measure_volume(results[0]);
+  EXPECT_GE(after.min_dihedral_deg, before.min_dihedral_deg);
+  EXPECT_LT(after.tets_below_deg[kCensusBin15Deg], before.tets_below_deg[kCensusBin15Deg]);
+  EXPECT_EQ(after.nonpositive_tets, 0);
+  EXPECT_EQ(model_triangles_not_in_tets(model, results[0]).size(), 0u);
+  for (size_t r = 0; r < before.region_volume.size(); ++r)
+    EXPECT_NEAR(after.region_volume[r], before.region_volume[r], 1e-9 * before.total_volume);
+}
+
+TEST(SliverSmoothing, TetrahedralizeSmoothsByDefaultAndReportsTheCensusBefore) {
+  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
+  Logger log(LogLevel::Quiet);
+  TetmeshOptions off;
+  off.smooth_points = false;
+  TetmeshRun plain, smoothed;
+  const VolumeMesh a = tetrahedralize(model, off, log, &plain);
+  const VolumeMesh b = tetrahedralize(model, TetmeshOptions{}, log, &smoothed);
+  EXPECT_EQ(plain.smoothed_points, 0);
+  EXPECT_GT(smoothed.smoothed_points, 0);
+  EXPECT_EQ(a.tets.size(), b.tets.size());
+  EXPECT_EQ(smoothed.smoothing_tets_below, measure_volume(a).tets_below_deg);
+  EXPECT_LE(measure_volume(b).tets_below_deg[kCensusBin15Deg],
+            measure_volume(a).tets_below_deg[kCensusBin15Deg]);
+  EXPECT_GE(measure_volume(b).min_dihedral_deg, measure_volume(a).min_dihedral_deg);
+}
+
+}  // namespace
+}  // namespace voroseal
