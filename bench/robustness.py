@@ -113,6 +113,7 @@ def one_run(a, model, scenario, geo_seed, res, seeds, out_dir):
         "regions_in": regions_in, "regions_out": regions_out,
         "q_mean": get(mr, "quality.q_mean"),
         "under30": get(mr, "quality.pct_angle_lt_30"),
+        "min_angle": get(mr, "quality.min_angle"),
         "hausdorff_pct": get(mr, "comparison.hausdorff_pct"),
         "seeds_added": get(rep, "refinement.seeds_added", 0)
         + get(rep, "repair_refinement.seeds_added", 0),
@@ -193,18 +194,24 @@ def main():
                           + ("" if row["pass"] else ": " + ", ".join(row["reasons"])),
                           flush=True)
     print()
-    print("| scenario | runs | pass | mean Q | % < 30 deg | Hausdorff % | seeds added | s/run |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| scenario | runs | pass | mean Q | % < 30 deg | min angle | Hausdorff % | seeds added "
+          "| s/run |")
+    print("|---|---|---|---|---|---|---|---|---|")
 
     def mean(xs):
         xs = [x for x in xs if isinstance(x, (int, float))]
         return sum(xs) / len(xs) if xs else float("nan")
+
+    def smallest(xs):
+        xs = [x for x in xs if isinstance(x, (int, float))]
+        return min(xs) if xs else float("nan")
     for scenario in a.scenarios.split(",") + ["all"]:
         rs = [r for r in rows if scenario in ("all", r["scenario"])]
         if not rs:
             continue
         print(f"| {scenario} | {len(rs)} | {sum(r['pass'] for r in rs)} | "
               f"{mean(r.get('q_mean') for r in rs):.3f} | {mean(r.get('under30') for r in rs):.2f} | "
+              f"{smallest(r.get('min_angle') for r in rs):.3g} | "
               f"{mean(r.get('hausdorff_pct') for r in rs):.3f} | "
               f"{mean(r.get('seeds_added') for r in rs):.0f} | {mean(r['seconds'] for r in rs):.1f} |")
     passed = sum(r["pass"] for r in rows)

@@ -3,6 +3,7 @@
 #include "modules/remesh/cleanup_steps.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -346,6 +347,59 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
     e.kill(t1);
     e.kill(t2);
     after_tris = {e.add_triangle(g1, part), e.add_triangle(g2, part)};
+    return true;
+  });
+}
+
+bool flip_cap_in_its_parts(Editor& e, int t) {
+  const Triangle f = e.mesh().triangles[t];
+  int k = 0;
+  double longest = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const double length = (e.p(f[(i + 1) % 3]) - e.p(f[i])).squaredNorm();
+    if (length > longest) {
+      longest = length;
+      k = i;
+    }
+  }
+  const int u = f[k], v = f[(k + 1) % 3], c = f[(k + 2) % 3];
+  std::vector<int> edge;
+  e.edge_triangles(u, v, edge);
+  std::vector<std::array<int, 2>> flips;  // (cap, its part's other triangle on the edge)
+  std::vector<int> verts = {u, v, c};
+  for (int a : edge) {
+    if (Editor::opposite(e.mesh().triangles[a], u, v) != c) continue;
+    const int part = e.mesh().triangle_part[a];
+    int other = -1, count = 0;
+    for (int b : edge)
+      if (b != a && e.mesh().triangle_part[b] == part) {
+        other = b;
+        ++count;
+      }
+    if (count != 1) return false;
+    const Triangle& fa = e.mesh().triangles[a];
+    const int x = has_directed_edge(fa, u, v) ? u : v, y = x == u ? v : u;
+    if (!has_directed_edge(e.mesh().triangles[other], y, x)) return false;  // not consistent
+    const int d = Editor::opposite(e.mesh().triangles[other], u, v);
+    if (d == c) return false;
+    flips.push_back({a, other});
+    verts.push_back(d);
+  }
+  if (flips.size() < 2) return false;  // one cap: try_flip()'s case
+  std::vector<int> before;
+  e.stars(verts, before);
+  return transact(e, before, true, [&](std::vector<int>& after) {
+    for (const auto& [a, b] : flips) {
+      const int part = e.mesh().triangle_part[a];
+      const Triangle fa = e.mesh().triangles[a];
+      const int x = has_directed_edge(fa, u, v) ? u : v, y = x == u ? v : u;
+      const int d = Editor::opposite(e.mesh().triangles[b], u, v);
+      e.kill(a);
+      e.kill(b);
+      e.add_triangle({c, x, d}, part);
+      e.add_triangle({d, y, c}, part);
+    }
+    e.stars(verts, after);
     return true;
   });
 }

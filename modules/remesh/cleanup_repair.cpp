@@ -108,6 +108,8 @@ void repair(Editor& e, const SurfaceProjector& projector, const CleanupThreshold
           break;
         }
     }
+    for (int t : census.degenerate)
+      if (e.alive(t) && flip_cap_in_its_parts(e, t)) ++report.flips;
     for (int t : involved) {
       if (!e.alive(t)) continue;
       const Triangle f = e.mesh().triangles[t];

@@ -78,6 +78,12 @@ int collapse_needles(Editor& e, double needle_angle, bool strict = false, const 
 // triangles (or, `strict`, when it repairs a violation).
 bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict);
 
+// A cap (an angle near 180°) flips its longest edge away, but try_flip() wants an edge of two
+// triangles: where a fold over a contact puts the same cap in several parts along it, each cap
+// flips with its own part's other triangle on the edge, all in one edit kept when it repairs.
+// False for a cap standing in one part alone (try_flip()'s case).
+bool flip_cap_in_its_parts(Editor& e, int t);
+
 int flip_edges(Editor& e, double flatness_deg);
 
 // Whether w follows contact vertex v along v's contact: a vertex of that contact, or a corner

@@ -454,6 +454,82 @@ TEST(MeshCleanup, OneTriangleOfACoincidentPairGoesWhenBothCannot) {
             std::count(input_part.begin(), input_part.end(), top));
 }
 
+TEST(MeshCleanup, CapsFoldedOverAContactInTwoPartsFlipAwayInEachPart) {
+  // The dual of a restricted Voronoi vertex next to a contact: two of the three parts along a
+  // straight contact edge (a, b) keep the chord and fold over the contact's midpoint m with a
+  // flat cap (b, a, m); the third follows a - m - b. The caps' longest edge has four
+  // triangles, so no plain flip takes it; each cap flips with its own part's triangle, and
+  // the parts then follow a - m - b as the third does. (In the remeshes where this was seen
+  // no collapse could take the caps either: neither end of their edges passes the link test.)
+  const StructuralModel input = build_model(test::lattice_box(4, true));
+  const SurfaceProjector projector(input);
+  RemeshedSurface s = as_remeshed(input);
+  int edge_a = -1, edge_b = -1;
+  std::vector<int> on_edge;
+  for (size_t t = 0; t < s.triangles.size() && edge_a < 0; ++t)
+    for (int i = 0; i < 3 && edge_a < 0; ++i) {
+      const int a = s.triangles[t][i], b = s.triangles[t][(i + 1) % 3];
+      if (s.features[a].kind != VertexFeature::Contact ||
+          s.features[b].kind != VertexFeature::Contact || s.features[b].id != s.features[a].id)
+        continue;
+      on_edge.clear();
+      for (size_t k = 0; k < s.triangles.size(); ++k) {
+        const Triangle& f = s.triangles[k];
+        if (std::count(f.begin(), f.end(), a) + std::count(f.begin(), f.end(), b) == 2)
+          on_edge.push_back(static_cast<int>(k));
+      }
+      if (on_edge.size() == 3) {
+        edge_a = a;
+        edge_b = b;
+      }
+    }
+  ASSERT_GE(edge_a, 0) << "no contact edge of three parts";
+  const int m = static_cast<int>(s.vertices.size());
+  s.vertices.push_back(0.5 * (s.vertices[edge_a] + s.vertices[edge_b]));
+  s.features.push_back(s.features[edge_a]);
+  // Parts of on_edge[0] and on_edge[1] fold; on_edge[2]'s triangle is split at m.
+  for (int k : {on_edge[0], on_edge[1]}) {
+    const Triangle& f = s.triangles[k];
+    const int i = static_cast<int>(std::find(f.begin(), f.end(), edge_a) - f.begin());
+    const bool forward = f[(i + 1) % 3] == edge_b;  // f holds the directed edge (a, b)
+    s.triangles.push_back(forward ? Triangle{edge_b, edge_a, m} : Triangle{edge_a, edge_b, m});
+    s.triangle_part.push_back(s.triangle_part[k]);
+  }
+  const Triangle split = s.triangles[on_edge[2]];
+  const int apex = cleanup::Editor::opposite(split, edge_a, edge_b);
+  Triangle first = split, second = split;
+  for (int& v : first)
+    if (v == edge_b) v = m;
+  for (int& v : second)
+    if (v == edge_a) v = m;
+  s.triangles[on_edge[2]] = first;
+  s.triangles.push_back(second);
+  s.triangle_part.push_back(s.triangle_part[on_edge[2]]);
+  ASSERT_NE(apex, m);
+  const int caps[2] = {static_cast<int>(s.triangles.size()) - 3,
+                       static_cast<int>(s.triangles.size()) - 2};
+  {
+    cleanup::Editor e(s, input);
+    EXPECT_EQ(e.census().count.degenerate, 2);
+    EXPECT_FALSE(cleanup::try_flip(e, edge_a, edge_b, 1.0, true));  // four triangles there
+    ASSERT_TRUE(cleanup::flip_cap_in_its_parts(e, caps[0]));
+    EXPECT_FALSE(e.alive(caps[0]));
+    EXPECT_FALSE(e.alive(caps[1]));
+    const cleanup::Editor::Census after = e.census();
+    EXPECT_EQ(after.count.degenerate, 0);
+    EXPECT_EQ(after.count.holes, 0);
+    EXPECT_EQ(after.count.leaks, 0);
+    EXPECT_EQ(after.count.crossings, 0);
+    EXPECT_FALSE(e.edge_exists(edge_a, edge_b));
+    e.finish();
+  }
+  double largest = 0.0;
+  for (const Triangle& f : s.triangles)
+    largest = std::max(
+        largest,
+        measure_triangle(s.vertices[f[0]], s.vertices[f[1]], s.vertices[f[2]]).max_angle_deg);
+  EXPECT_LT(largest, 170.0);
+}
 
 TEST(MeshCleanup, KeepsPositionsThatSurviveTheRoundTripThroughAFile) {
   // Far from the origin, as geological coordinates are: a file holds local + origin, and a
