@@ -1,9 +1,16 @@
-// Smoothing of the interior points next to slivers. A point inside a region (on no surface
-// triangle) that is a vertex of a tet flatter than a bound moves to where the smallest dihedral
-// angle of its tets is largest, and stays there only when that angle rose and every one of its
-// tets stays positive and within its volume bound. Only the moved point's tets change, so no
-// tet ends flatter than the flattest of them was: the smallest angle of the mesh never drops,
-// and the surfaces, the regions and the tets' connectivity stay as they are.
+// Smoothing of the points next to slivers. A point that is a vertex of a tet flatter than a
+// bound moves to where the smallest dihedral angle of its tets is largest, and stays there only
+// when that angle rose and every one of its tets stays positive and within its volume bound.
+// Nor may a move raise the largest radius-edge ratio of those tets past kKeptRadiusEdge (or what
+// it was). Only the moved point's tets change, so no tet ends flatter than the flattest of them
+// was: the smallest angle of the mesh never drops, and the regions and the connectivity stay.
+//
+// Points inside the regions move freely. Points on the surfaces slide along them (when
+// surface_slide > 0): a point inside a surface part on its triangles as they were, a point on a
+// contact along its two contact edges; corners and other points where contacts meet stay. A
+// slide is kept only when the new surface triangles lie within surface_slide × the mean edge at
+// the point of the triangles as they were, and keep their smallest angle (or kKeptAngleDeg):
+// the surfaces keep their shape, their triangles are placed for the tets.
 #pragma once
 
 #include <vector>
@@ -19,17 +26,22 @@ struct SliverSmoothingOptions {
   int passes = 3;
   /// The largest volume a tet of region r may reach, region_volume_bound[r]; 0 or absent: none.
   std::vector<double> region_volume_bound;
+  /// How far the surfaces may move, relative to the mean edge at a sliding point; 0 keeps the
+  /// surface points where they are.
+  double surface_slide = 0.0;
 };
 
 struct SliverSmoothingResult {
-  long candidates = 0;  // interior points of tets below the bound, over all passes
-  long moved = 0;       // moves kept
-  int passes = 0;       // passes run (the last one moved nothing, or the limit was reached)
+  long candidates = 0;     // points of tets below the bound, over all passes
+  long moved = 0;          // points inside the regions moved
+  long moved_surface = 0;  // points on the surfaces slid
+  int passes = 0;          // passes run (the last one moved nothing, or the limit was reached)
 };
 
-/// Moves the interior points of `mesh` next to its flat tets (see above); mesh.triangles tell
-/// which points lie on surfaces. Parallel over sets of points that share no tet; the result
-/// does not depend on the number of threads.
+/// Moves the points of `mesh` next to its flat tets (see above). The surfaces are
+/// mesh.triangles, their parts triangle_part (triangle_surface when it is empty): an edge whose
+/// triangles are not two of one part is on a contact. Parallel over sets of points that share
+/// no tet; the result does not depend on the number of threads.
 SliverSmoothingResult smooth_sliver_points(VolumeMesh& mesh, const SliverSmoothingOptions& options);
 
 }  // namespace voroseal

@@ -165,10 +165,17 @@ class TetmeshModule : public Module {
     polish.max = 60.0;
     ParameterSpec smooth{
         "smooth", ParameterType::Bool, TetmeshOptions{}.smooth_points,
-        "last, move the points inside the regions next to tets under " +
+        "last, move the points of the tets under " +
             std::to_string(static_cast<int>(kSmoothBelowDeg)) +
             " deg to where their tets' smallest dihedral angle is largest (each move kept only "
-            "where that angle rises; surfaces untouched)"};
+            "where that angle rises), those on surfaces by --surface-slide"};
+    ParameterSpec slide{
+        "surface-slide", ParameterType::Double, TetmeshOptions{}.surface_slide,
+        "with --smooth, the surface points of those tets slide along their surfaces, the new "
+        "surface triangles within this many local edge lengths of the old ones (the output's "
+        "surfaces are the slid ones); 0 keeps the surface points where they are"};
+    slide.min = 0.0;
+    slide.max = kMaxSurfaceSlide;
     ParameterSpec size{
         "size-rounds", ParameterType::Int, 8,
         "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
@@ -186,7 +193,7 @@ class TetmeshModule : public Module {
     extra.max = 1000.0;
     return {output,     quality,   dihedral, volume,  region_size, surface_sizes,
             size_field, gradation, keep,     slivers, optimise,    refine,
-            rounds,     polish,    smooth,   size,    extra};
+            rounds,     polish,    smooth,   slide,   size,        extra};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -218,6 +225,7 @@ class TetmeshModule : public Module {
     options.refine_surface_rounds = static_cast<int>(parameters.get_int("refine-surface-rounds"));
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
     options.smooth_points = parameters.get_bool("smooth");
+    options.surface_slide = parameters.get_double("surface-slide");
     options.extra_time = parameters.get_double("extra-time");
 
     const auto start = std::chrono::steady_clock::now();
@@ -290,6 +298,7 @@ class TetmeshModule : public Module {
         {"sliver_points", run.sliver_points},
         {"polished", run.polished},
         {"smoothed_points", run.smoothed_points},
+        {"slid_points", run.slid_points},
         {"tets_below_deg",
          {{"tetgen", census(run.tetgen_tets_below)},
           {"before_smoothing", census(run.smoothing_tets_below)},

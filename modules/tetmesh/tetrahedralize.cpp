@@ -540,7 +540,13 @@ std::vector<Vec3> sliver_points(const VolumeMesh& mesh, const TriangleTree& surf
 
 /// Needle-filled surfaces: more than 0.2 % of the triangles sharper than 1° (raw inputs; see
 /// mesh_with_tetgen).
-bool is_needle_filled(long needles, const StructuralModel& model) { return needles > 0.002 * model.num_triangles(); }
+constexpr double kNeedleShare = 0.002;
+bool is_needle_filled(long needles, long triangles) {
+  return needles > kNeedleShare * triangles;
+}
+bool is_needle_filled(long needles, const StructuralModel& model) {
+  return is_needle_filled(needles, static_cast<long>(model.num_triangles()));
+}
 
 /// Smallest angle of the model's triangles (degrees) and how many are sharper than 1°.
 std::pair<double, long> surface_needles(const StructuralModel& model) {
@@ -1064,26 +1070,32 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
 /// moved; `seconds` sums every run's time.
 void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, ConvertedMesh& candidate,
             double& seconds) {
+  const bool needle_filled = is_needle_filled(info.surface_needles, info.input_facets);
   if (candidate.smoothed) return;
   candidate.smoothed = true;
   VolumeMesh& mesh = candidate.mesh;
   info.smoothing_tets_below = dihedral_census(mesh);
   info.smoothed_points = 0;
+  info.slid_points = 0;
   if (!options.smooth_points) return;
   const auto start = std::chrono::steady_clock::now();
   SliverSmoothingOptions smoothing;
   smoothing.below_deg = kSmoothBelowDeg;
+  // Not on needle-filled surfaces (raw inputs): those are the user's own triangles.
+  smoothing.surface_slide = needle_filled ? 0.0 : options.surface_slide;
   for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
     smoothing.region_volume_bound.push_back(options.volume_bound(r));
   const double before = min_dihedral(mesh);
   const SliverSmoothingResult moved = smooth_sliver_points(mesh, smoothing);
   info.smoothed_points = moved.moved;
+  info.slid_points = moved.moved_surface;
   const double took = seconds_since(start);
   seconds += took;
-  log.debug("tetmesh: smoothing moved " + std::to_string(moved.moved) + " of " +
-            std::to_string(moved.candidates) + " interior points in " +
-            std::to_string(moved.passes) + " passes: tets under " + number(kSmoothBelowDeg) +
-            " deg " + std::to_string(info.smoothing_tets_below[kCensusBin15Deg]) + " -> " +
+  log.debug("tetmesh: smoothing moved " + std::to_string(moved.moved) + " interior and slid " +
+            std::to_string(moved.moved_surface) + " surface points of " +
+            std::to_string(moved.candidates) + " in " + std::to_string(moved.passes) +
+            " passes: tets under " + number(kSmoothBelowDeg) + " deg " +
+            std::to_string(info.smoothing_tets_below[kCensusBin15Deg]) + " -> " +
             std::to_string(dihedral_census(mesh)[kCensusBin15Deg]) + ", min dihedral " +
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
 }
@@ -1136,7 +1148,22 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
   info.tetgen_output = std::move(trial.tetgen_output);
   info.smoothing_tets_below = trial.smoothing_tets_below;
   info.smoothed_points = trial.smoothed_points;
+  info.slid_points = trial.slid_points;
   best = std::move(mesh);
+}
+
+/// `model` with the PLC points that the smoothing slid (mesh vertex i is PLC point i, switch J)
+/// where they went in `mesh`; null when none moved.
+std::shared_ptr<const StructuralModel> with_slid_points(const StructuralModel& model,
+                                                        const VolumeMesh& mesh) {
+  const std::vector<int> plc = plc_vertices(flatten(model), model.vertices.size());
+  std::shared_ptr<StructuralModel> slid;
+  for (size_t i = 0; i < plc.size() && i < mesh.vertices.size(); ++i) {
+    if (mesh.vertices[i] == model.vertices[plc[i]]) continue;
+    if (!slid) slid = std::make_shared<StructuralModel>(model);
+    slid->vertices[plc[i]] = mesh.vertices[i];
+  }
+  return slid;
 }
 
 /// True when `a` is the better tet mesh: a larger smallest dihedral angle, else fewer tets under
@@ -1181,6 +1208,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   if (!(options.size_rounds >= 0 && options.size_rounds <= kMaxSizeRounds))
     throw ParameterError("size rounds " + std::to_string(options.size_rounds) +
                          " out of range [0, " + std::to_string(kMaxSizeRounds) + "]");
+  if (!(options.surface_slide >= 0.0 && options.surface_slide <= kMaxSurfaceSlide))
+    throw ParameterError("surface slide " + number(options.surface_slide) + " out of range [0, " +
+                         number(kMaxSurfaceSlide) + "]");
   if (!(options.extra_time >= 0.0 && std::isfinite(options.extra_time)))
     throw ParameterError("extra time " + number(options.extra_time) + " must be 0 or positive");
   if (!(options.attempts >= 1 && options.attempts <= 10))
@@ -1214,6 +1244,14 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   }
   smooth(options, log, info, best, smoothing_seconds);
   info.smoothing_seconds = smoothing_seconds;
+  if (info.slid_points > 0) {
+    if (auto slid = with_slid_points(info.refined_model ? *info.refined_model : model, best.mesh))
+      info.refined_model = std::move(slid);
+    log.info("tetmesh: " + std::to_string(info.slid_points) +
+             " surface points slid along their surfaces for the tets (the triangles within " +
+             number(options.surface_slide) +
+             " x the local edge of where they were; --surface-slide 0 keeps them)");
+  }
   info.tetgen_seconds = extra.total();  // every run's, kept or not
   info.tetgen_tets_below = first_tets_below;
   if (info.extra_time_spent)

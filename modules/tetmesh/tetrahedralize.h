@@ -23,6 +23,12 @@ constexpr double kMinExtraSeconds = 5.0;
 /// 15° (kCensusBin15Deg), the bound the polish run aims at.
 constexpr double kSmoothBelowDeg = kDihedralCensusDeg[kCensusBin15Deg];
 
+/// TetmeshOptions::surface_slide by default: a hundredth of the local edge, far below the
+/// remesh's own distance to its input.
+constexpr double kSurfaceSlide = 0.01;
+/// The largest surface_slide accepted: beyond a tenth of an edge the surfaces change shape.
+constexpr double kMaxSurfaceSlide = 0.1;
+
 /// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
 constexpr int kMaxSizeRounds = 16;
 
@@ -99,10 +105,15 @@ struct TetmeshOptions {
   /// chase min_dihedral_deg. Kept only when its smallest dihedral angle is no lower, no more
   /// triangles are split and the volume bound holds. 0, or not above min_dihedral_deg: none.
   double polish_dihedral_deg = 15.0;
-  /// Last, the points inside the regions next to tets under kSmoothBelowDeg move to where the
-  /// smallest dihedral angle of their tets is largest, each move kept only when that angle rises
-  /// (sliver_smoothing.h): fewer flat tets, the minimum never lower, surfaces untouched.
+  /// Last, the points of the tets under kSmoothBelowDeg move to where the smallest dihedral
+  /// angle of their tets is largest, each move kept only when that angle rises
+  /// (sliver_smoothing.h): fewer flat tets, the minimum never lower.
   bool smooth_points = true;
+  /// With smooth_points, the surface points of those tets slide along their surfaces too, the
+  /// new surface triangles within this many mean edges (at the point) of the old ones; 0 keeps
+  /// the surface points where they are. The output triangles are then the slid ones
+  /// (TetmeshRun::refined_model).
+  double surface_slide = kSurfaceSlide;
   /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
   /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
   /// many rounds. Under Y TetGen adds no point inside the diametral ball of a surface triangle,
@@ -190,12 +201,14 @@ struct TetmeshRun {
   int size_bisected_edges = 0;            // surface edges they split
   bool polished = false;                  // the polish run's mesh was kept
   long smoothed_points = 0;               // interior points moved by the smoothing
+  long slid_points = 0;                   // surface points it slid along their surfaces
   /// VolumeQuality::tets_below_deg before the smoothing (after the polish).
   std::array<long, kDihedralCensusDeg.size()> smoothing_tets_below{};
   /// VolumeQuality::tets_below_deg of TetGen's first mesh, before passes, rounds and polish.
   std::array<long, kDihedralCensusDeg.size()> tetgen_tets_below{};
-  /// The model with the bisected surfaces TetGen meshed last (the output triangles are its
-  /// triangles); null when no round was kept.
+  /// The model with the bisected surfaces TetGen meshed last, with the points the smoothing slid
+  /// where they went (the output triangles are its triangles); null when no round was kept and
+  /// no point slid.
   std::shared_ptr<const StructuralModel> refined_model;
   double plc_seconds = 0.0;               // building the PLC (region points included)
   double tetgen_seconds = 0.0;            // all runs

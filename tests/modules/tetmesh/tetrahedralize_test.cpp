@@ -71,6 +71,18 @@ void expect_valid_mesh(const StructuralModel& model, const VolumeMesh& mesh, dou
   for (const Edge& e : mesh.edges) EXPECT_TRUE(triangle_edges.count(std::minmax(e[0], e[1])));
 }
 
+/// The model a mesh was made from: the bisected or slid one when tetrahedralize() made one.
+const StructuralModel& meshed(const StructuralModel& model, const TetmeshRun& run) {
+  return run.refined_model ? *run.refined_model : model;
+}
+
+/// Options for a test of one mechanism: the last smoothing, which lifts every baseline, left out.
+TetmeshOptions without_smoothing() {
+  TetmeshOptions options;
+  options.smooth_points = false;
+  return options;
+}
+
 TEST(TetgenSwitches, AreTheDocumentedString) {
   TetmeshOptions o;
   EXPECT_EQ(tetgen_switches(o), "pq1.5/10o/150AYJQ");
@@ -128,7 +140,7 @@ TEST(Tetrahedralize, BoxCutByHorizonGivesTwoConformalRegions) {
   EXPECT_EQ(run.switches, run.polished ? "pq1.5/15o/150AYJQ" : "pq1.5/10o/150AYJQ");
   EXPECT_EQ(run.split_facets, 0);
   EXPECT_EQ(run.input_facets, model.num_triangles());
-  expect_valid_mesh(model, mesh);
+  expect_valid_mesh(meshed(model, run), mesh);
   const VolumeQuality q = measure_volume(mesh);
   for (double v : q.region_volume) EXPECT_NEAR(v, 0.5, 0.5e-6);
   EXPECT_GE(q.min_dihedral_deg, 5.0);
@@ -190,8 +202,9 @@ TEST(Tetrahedralize, FloatingFaultStaysAsInternalFacets) {
   const int fault = part_named(model, "fault");
   ASSERT_GE(fault, 0);
   Logger log = quiet_logger();
-  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log);
-  expect_valid_mesh(model, mesh);
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log, &run);
+  expect_valid_mesh(meshed(model, run), mesh);
   EXPECT_NEAR(measure_volume(mesh).region_volume[0], 1.0, 1e-6);
   int fault_triangles = 0;
   for (int s : mesh.triangle_part) fault_triangles += s == fault;
@@ -343,7 +356,7 @@ TEST(Tetrahedralize, SurfaceSizesKeepTheTetsAsSmallAsTheTrianglesAround) {
   TetmeshRun run;
   const VolumeMesh sized = tetrahedralize(model, options, log, &run);
   EXPECT_NE(run.switches.find('m'), std::string::npos);
-  expect_valid_mesh(model, sized);
+  expect_valid_mesh(meshed(model, run), sized);
   double surface = 0.0;
   for (const Triangle& t : flatten(model).triangles)
     for (int k = 0; k < 3; ++k)
@@ -363,8 +376,9 @@ TEST(Tetrahedralize, SizeFieldMakesTheTetsFinerNearItsPoints) {
   TetmeshOptions options;
   options.size_field =
       std::make_shared<const SizeField>(std::vector<Vec3>{centre}, std::vector<double>{0.05});
-  const VolumeMesh mesh = tetrahedralize(model, options, log);
-  expect_valid_mesh(model, mesh);
+  TetmeshRun run;
+  const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+  expect_valid_mesh(meshed(model, run), mesh);
   const double near =
       mean_tet_edge(mesh, [&](const Vec3& c) { return (c - centre).norm() < 0.15; });
   const double far = mean_tet_edge(mesh, [&](const Vec3& c) { return (c - centre).norm() > 0.45; });
@@ -437,7 +451,7 @@ TEST_P(BundledModel, MeetsEveryBarWithTheDefaults) {
   Logger log = quiet_logger();
   TetmeshRun run;
   const VolumeMesh mesh = tetrahedralize(model, TetmeshOptions{}, log, &run);
-  expect_valid_mesh(model, mesh);
+  expect_valid_mesh(meshed(model, run), mesh);
   EXPECT_EQ(run.split_facets, 0);
   const VolumeQuality q = measure_volume(mesh);
   EXPECT_GE(q.min_dihedral_deg, 5.0) << run.sliver_passes << " sliver passes, " << run.sliver_points << " points";
@@ -463,7 +477,7 @@ TEST(Tetrahedralize, SliverThresholdSplitsSliversAcrossAThinLayer) {
   const StructuralModel model = build_model(test::thin_layer_box(8, 0.08));
   ASSERT_EQ(model.regions.size(), 3u);
   Logger log = quiet_logger();
-  TetmeshOptions options;
+  TetmeshOptions options = without_smoothing();
   options.sliver_passes = 0;
   options.sliver_max_dihedral_deg = 0;
   options.refine_surface_below_deg = 0;  // the surface bisection would open them too
@@ -539,7 +553,7 @@ TEST(Tetrahedralize, PolishRunLeavesFewerTetsUnder15DegreesAndNoLowerMinimum) {
   // reach (off the kept surfaces) and is kept only when the minimum does not drop.
   const StructuralModel model = read_model(test::bundled_model("folded_layers.ts"));
   Logger log = quiet_logger();
-  TetmeshOptions options;
+  TetmeshOptions options = without_smoothing();
   options.polish_dihedral_deg = 0.0;
   TetmeshRun plain_run;
   const VolumeMesh plain = tetrahedralize(model, options, log, &plain_run);
@@ -598,7 +612,7 @@ TEST(Tetrahedralize, SurfaceBisectionOpensTheTetsAcrossAThinLayer) {
   // same surfaces, finer triangles there.
   const StructuralModel model = build_model(test::thin_layer_box(8, 0.02));
   Logger log = quiet_logger();
-  TetmeshOptions options;
+  TetmeshOptions options = without_smoothing();
   options.refine_surface_below_deg = 0;
   const VolumeMesh kept = tetrahedralize(model, options, log);
   options.refine_surface_below_deg = 5.0;
@@ -644,13 +658,14 @@ TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
   EXPECT_GT(sized.seeds.seeds.size(), 400u);
   EXPECT_NEAR(sized.seeds.edge_length, uniform.seeds.edge_length, 0.05 * uniform.seeds.edge_length);
   const VolumeMesh coarse = tetrahedralize(uniform.model, TetmeshOptions{}, log);
-  const VolumeMesh fine = tetrahedralize(sized.model, TetmeshOptions{}, log);
+  TetmeshRun run;
+  const VolumeMesh fine = tetrahedralize(sized.model, TetmeshOptions{}, log, &run);
   const VolumeQuality q0 = measure_volume(coarse), q1 = measure_volume(fine);
   std::fprintf(stderr, "[figures] thin layer remeshed: %zu seeds min dihedral %.2f deg; thin-layer sizing %zu seeds %.2f deg\n",
                uniform.seeds.seeds.size(), q0.min_dihedral_deg, sized.seeds.seeds.size(), q1.min_dihedral_deg);
   EXPECT_LT(q0.min_dihedral_deg, 5.0);
   EXPECT_GE(q1.min_dihedral_deg, 5.0);  // 7.57 (5.9-7.4 with random seeds 2-7; 0.5-2.6 without sizing)
-  expect_valid_mesh(sized.model, fine);
+  expect_valid_mesh(meshed(sized.model, run), fine);
 }
 
 /// Smallest dihedral angle (degrees) of the tets whose centroid lies in y0 < y < y1 (file
@@ -694,7 +709,9 @@ TEST(Tetrahedralize, ZippedPinchOutLeavesNoFlatTetsInTheTongue) {
     return c.holes_left + c.leaks_left + c.intersections_left + c.pinches_left + c.degenerate_left + c.folds_left;
   };
   EXPECT_LE(left(zipped.cleanup), left(plain.cleanup));
-  TetmeshOptions kept;  // the surfaces' own triangles: the surface bisection opens the tongue's tets too
+  // The surfaces' own triangles, as TetGen meshes them: the surface bisection and the smoothing
+  // open the tongue's tets too.
+  TetmeshOptions kept = without_smoothing();
   kept.refine_surface_below_deg = 0;
   const VolumeMesh a = tetrahedralize(plain.model, kept, log);
   const VolumeMesh b = tetrahedralize(zipped.model, kept, log);
