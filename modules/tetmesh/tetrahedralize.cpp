@@ -1065,12 +1065,11 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
              " deg: min dihedral " + number(best_angle) + " deg");
 }
 
-/// The smoothing of the interior points next to flat tets (TetmeshOptions::smooth_points), once
+/// The smoothing of the points of flat tets (TetmeshOptions::smooth_points, surface_slide), once
 /// per mesh: candidates are compared after it. `info` gets the census before it and the points
 /// moved; `seconds` sums every run's time.
 void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, ConvertedMesh& candidate,
             double& seconds) {
-  const bool needle_filled = is_needle_filled(info.surface_needles, info.input_facets);
   if (candidate.smoothed) return;
   candidate.smoothed = true;
   VolumeMesh& mesh = candidate.mesh;
@@ -1082,6 +1081,7 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
   SliverSmoothingOptions smoothing;
   smoothing.below_deg = kSmoothBelowDeg;
   // Not on needle-filled surfaces (raw inputs): those are the user's own triangles.
+  const bool needle_filled = is_needle_filled(info.surface_needles, info.input_facets);
   smoothing.surface_slide = needle_filled ? 0.0 : options.surface_slide;
   for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
     smoothing.region_volume_bound.push_back(options.volume_bound(r));

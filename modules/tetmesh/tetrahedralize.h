@@ -19,7 +19,7 @@ namespace voroseal {
 /// TetmeshOptions::min_extra_seconds by default.
 constexpr double kMinExtraSeconds = 5.0;
 
-/// The tets whose interior points TetmeshOptions::smooth_points moves: those under the census'
+/// The tets whose points TetmeshOptions::smooth_points moves: those under the census'
 /// 15° (kCensusBin15Deg), the bound the polish run aims at.
 constexpr double kSmoothBelowDeg = kDihedralCensusDeg[kCensusBin15Deg];
 
