@@ -42,6 +42,17 @@ double smallest_angle(const VolumeMesh& mesh) {
   return measure_volume(mesh).min_dihedral_deg;
 }
 
+// TetGen's mesh of a box with a layer thinner than its triangles, neither smoothed nor polished:
+// interior and surface points next to flat tets to move.
+VolumeMesh thin_layer_mesh() {
+  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
+  Logger log(LogLevel::Quiet);
+  TetmeshOptions options;
+  options.smooth_points = false;
+  options.polish_dihedral_deg = 0.0;
+  return tetrahedralize(model, options, log);
+}
+
 TEST(SliverSmoothing, MovesAnInteriorPointNextToAFaceBackInsideAndNeverASurfacePoint) {
   // The point sits 0.05 from the face (+x, +y, +z): the tet on that face is nearly flat.
   VolumeMesh mesh = octahedron(Vec3(0.5, 0.3, 0.15));
@@ -82,14 +93,7 @@ TEST(SliverSmoothing, KeepsEveryTetWithinItsRegionsVolumeBound) {
 }
 
 TEST(SliverSmoothing, NeverLowersTheSmallestAngleAndGivesTheSameMeshOnAnyThreads) {
-  // TetGen's mesh of a box with a thin layer, without its own polish: interior points next to
-  // flat tets to move.
-  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
-  Logger log(LogLevel::Quiet);
-  TetmeshOptions options;
-  options.smooth_points = false;
-  options.polish_dihedral_deg = 0.0;
-  const VolumeMesh start = tetrahedralize(model, options, log);
+  const VolumeMesh start = thin_layer_mesh();
   const VolumeQuality before = measure_volume(start);
   std::vector<VolumeMesh> results;
   SliverSmoothingResult r;
@@ -119,12 +123,7 @@ TEST(SliverSmoothing, SlidesSurfacePointsOnTheirSurfacesAndLeavesCornersWhereThe
   // The same mesh smoothed with the surface points kept and slid: sliding leaves fewer flat
   // tets; every point stays within the slide of the surfaces as they were, the box corners
   // (three contacts) stay, and the triangles keep their smallest angle (or 20 deg).
-  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
-  Logger log(LogLevel::Quiet);
-  TetmeshOptions tetmesh;
-  tetmesh.smooth_points = false;
-  tetmesh.polish_dihedral_deg = 0.0;
-  const VolumeMesh start = tetrahedralize(model, tetmesh, log);
+  const VolumeMesh start = thin_layer_mesh();
   VolumeMesh kept = start, slid = start;
   smooth_sliver_points(kept, SliverSmoothingOptions{});
   SliverSmoothingOptions options;
