@@ -1000,71 +1000,6 @@ void require_volume_bound(const StructuralModel& model, const TetmeshOptions& op
   throw MesherError(message.str());
 }
 
-/// A mesh and what made it: the one before the surface bisection rounds is polished too.
-struct Candidate {
-  ConvertedMesh mesh;
-  TetmeshRun info;
-};
-
-/// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
-/// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
-/// angle rises. `best` and `info` become those of the last round kept, `before_rounds` what
-/// they were before the first.
-void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
-                    std::optional<Candidate>& before_rounds) {
-  const double bound = options.refine_surface_below_deg;
-  if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
-  double best_angle = min_dihedral(best.mesh);
-  std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
-  const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
-  int bisected = 0;
-  bool spent = info.extra_time_spent;
-  for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
-    if (!extra.allows_another()) {
-      spent = true;
-      break;
-    }
-    const StructuralModel& from = refined ? *refined : model;
-    const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound);
-    if (edges.empty()) break;  // every tet below the bound is in a wedge
-    auto next = std::make_shared<StructuralModel>(from);
-    TetmeshRun trial;
-    ConvertedMesh mesh;
-    int split = 0;
-    try {
-      split = bisect_edges(*next, edges);
-      mesh = mesh_with_tetgen(*next, options, log, trial, extra);
-    } catch (const MesherError& e) {
-      log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) + " failed (" + e.what() +
-                "); keeping the previous mesh");
-      break;
-    }
-    spent = spent || trial.extra_time_spent;
-    const double angle = min_dihedral(mesh.mesh);
-    log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
-              " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
-    if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
-    if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
-    bisected += split;
-    trial.surface_rounds = round;
-    if (!before_rounds) before_rounds = Candidate{std::move(best), info};
-    info = std::move(trial);
-    best = std::move(mesh);
-    best_angle = angle;
-    refined = std::move(next);
-  }
-  info.bisected_edges = bisected;
-  info.extra_time_spent = spent;
-  info.refined_model = refined;
-  info.size_rounds = size_rounds;
-  info.size_bisected_edges = size_edges;
-  if (bisected > 0)
-    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
-             " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
-             " deg: min dihedral " + number(best_angle) + " deg");
-}
-
 /// The smoothing of the points of flat tets (TetmeshOptions::smooth_points, surface_slide), once
 /// per mesh: candidates are compared after it. `info` gets the census before it and the points
 /// moved; `seconds` sums every run's time.
@@ -1098,6 +1033,74 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
             std::to_string(info.smoothing_tets_below[kCensusBin15Deg]) + " -> " +
             std::to_string(dihedral_census(mesh)[kCensusBin15Deg]) + ", min dihedral " +
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
+}
+
+/// A mesh and what made it: the one before the surface bisection rounds is polished too.
+struct Candidate {
+  ConvertedMesh mesh;
+  TetmeshRun info;
+};
+
+/// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
+/// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
+/// angle rises. `best` and `info` become those of the last round kept, `before_rounds` what
+/// they were before the first.
+void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
+                    std::optional<Candidate>& before_rounds, double& smoothing_seconds) {
+  const double bound = options.refine_surface_below_deg;
+  if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
+  // The rounds bisect under the tets the smoothing leaves flat, and judge meshes after it.
+  smooth(options, log, info, best, smoothing_seconds);
+  double best_angle = min_dihedral(best.mesh);
+  std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
+  const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
+  int bisected = 0;
+  bool spent = info.extra_time_spent;
+  for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
+    if (!extra.allows_another()) {
+      spent = true;
+      break;
+    }
+    const StructuralModel& from = refined ? *refined : model;
+    const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound);
+    if (edges.empty()) break;  // every tet below the bound is in a wedge
+    auto next = std::make_shared<StructuralModel>(from);
+    TetmeshRun trial;
+    ConvertedMesh mesh;
+    int split = 0;
+    try {
+      split = bisect_edges(*next, edges);
+      mesh = mesh_with_tetgen(*next, options, log, trial, extra);
+    } catch (const MesherError& e) {
+      log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) + " failed (" + e.what() +
+                "); keeping the previous mesh");
+      break;
+    }
+    spent = spent || trial.extra_time_spent;
+    smooth(options, log, trial, mesh, smoothing_seconds);
+    const double angle = min_dihedral(mesh.mesh);
+    log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
+              " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
+    if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
+    if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
+    bisected += split;
+    trial.surface_rounds = round;
+    if (!before_rounds) before_rounds = Candidate{std::move(best), info};
+    info = std::move(trial);
+    best = std::move(mesh);
+    best_angle = angle;
+    refined = std::move(next);
+  }
+  info.bisected_edges = bisected;
+  info.extra_time_spent = spent;
+  info.refined_model = refined;
+  info.size_rounds = size_rounds;
+  info.size_bisected_edges = size_edges;
+  if (bisected > 0)
+    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
+             " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
+             " deg: min dihedral " + number(best_angle) + " deg");
 }
 
 /// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
@@ -1224,8 +1227,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   const auto first_tets_below = info.tetgen_tets_below;  // TetGen's own mesh, for the report
   refine_for_size(model, options, log, info, best, extra);
   std::optional<Candidate> before_rounds;
-  refine_surface(model, options, log, info, best, extra, before_rounds);
   double smoothing_seconds = 0.0;
+  refine_surface(model, options, log, info, best, extra, before_rounds, smoothing_seconds);
   polish(model, options, log, info, best, extra, smoothing_seconds);
   // The rounds raised the minimum, but their finer triangles can leave the polish less to gain:
   // the mesh before them is polished too and the better of the two kept.
