@@ -365,7 +365,12 @@ bool flip_cap_in_its_parts(Editor& e, int t) {
   const int u = f[k], v = f[(k + 1) % 3], c = f[(k + 2) % 3];
   std::vector<int> edge;
   e.edge_triangles(u, v, edge);
-  std::vector<std::array<int, 2>> flips;  // (cap, its part's other triangle on the edge)
+  // A cap (x, y, c) and its part's other triangle (y, x, d) on the edge become (c, x, d) and
+  // (d, y, c).
+  struct Flip {
+    int cap, other, part, x, y, d;
+  };
+  std::vector<Flip> flips;
   std::vector<int> verts = {u, v, c};
   for (int a : edge) {
     if (Editor::opposite(e.mesh().triangles[a], u, v) != c) continue;
@@ -377,27 +382,22 @@ bool flip_cap_in_its_parts(Editor& e, int t) {
         ++count;
       }
     if (count != 1) return false;
-    const Triangle& fa = e.mesh().triangles[a];
-    const int x = has_directed_edge(fa, u, v) ? u : v, y = x == u ? v : u;
+    const int x = has_directed_edge(e.mesh().triangles[a], u, v) ? u : v, y = x == u ? v : u;
     if (!has_directed_edge(e.mesh().triangles[other], y, x)) return false;  // not consistent
     const int d = Editor::opposite(e.mesh().triangles[other], u, v);
     if (d == c) return false;
-    flips.push_back({a, other});
+    flips.push_back({a, other, part, x, y, d});
     verts.push_back(d);
   }
   if (flips.size() < 2) return false;  // one cap: try_flip()'s case
   std::vector<int> before;
   e.stars(verts, before);
   return transact(e, before, true, [&](std::vector<int>& after) {
-    for (const auto& [a, b] : flips) {
-      const int part = e.mesh().triangle_part[a];
-      const Triangle fa = e.mesh().triangles[a];
-      const int x = has_directed_edge(fa, u, v) ? u : v, y = x == u ? v : u;
-      const int d = Editor::opposite(e.mesh().triangles[b], u, v);
-      e.kill(a);
-      e.kill(b);
-      e.add_triangle({c, x, d}, part);
-      e.add_triangle({d, y, c}, part);
+    for (const Flip& g : flips) {
+      e.kill(g.cap);
+      e.kill(g.other);
+      e.add_triangle({c, g.x, g.d}, g.part);
+      e.add_triangle({g.d, g.y, c}, g.part);
     }
     e.stars(verts, after);
     return true;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_neighbours.h"
 #include "modules/remesh/voronoi_clipping.h"
 
@@ -42,17 +43,10 @@ std::vector<std::pair<int, int>> meetings(const ModelGeometry& geometry,
   const int used =
       rvd_detail::active_threads(rvd_detail::resolve_threads(threads), n + static_cast<long>(nrec));
   SeedNeighbours nb;
-  nb.build(seeds.data(), n, 16, used);
-  std::vector<int> hint;
-  std::vector<rvd_detail::TraversalState> states(used);
+  nb.build(seeds.data(), n, RvdOptions{}.neighbours, used);
   std::vector<std::vector<std::pair<int, int>>> chunks(rvd_detail::traversal_chunks(nrec));
   std::vector<MeetingVisitor> visitors(used, {geometry.triangles().data(), &chunks, nullptr});
-  if (geometry.has_density())
-    rvd_detail::traverse_restricted_polygons<true>(geometry, seeds.data(), n, nb, hint, states,
-                                                   visitors, used);
-  else
-    rvd_detail::traverse_restricted_polygons<false>(geometry, seeds.data(), n, nb, hint, states,
-                                                    visitors, used);
+  rvd_detail::traverse_once(geometry, seeds, nb, visitors);
   std::vector<std::pair<int, int>> all;
   size_t total = 0;
   for (const auto& c : chunks) total += c.size();

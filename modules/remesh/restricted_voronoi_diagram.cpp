@@ -142,14 +142,9 @@ RestrictedVoronoiDiagram compute_restricted_voronoi_diagram(const ModelGeometry&
                                                  n + static_cast<long>(geometry.triangles().size()));
   SeedNeighbours nb;
   nb.build(seeds.data(), n, std::max(1, options.neighbours), threads);
-  std::vector<int> hint;
-  std::vector<rvd_detail::TraversalState> states(threads);
   std::vector<CollectVisitor> visitors(threads);
   for (CollectVisitor& v : visitors) v.vertex_corner = &geometry.vertex_corner();
-  if (geometry.has_density())
-    rvd_detail::traverse_restricted_polygons<true>(geometry, seeds.data(), n, nb, hint, states, visitors, threads);
-  else
-    rvd_detail::traverse_restricted_polygons<false>(geometry, seeds.data(), n, nb, hint, states, visitors, threads);
+  rvd_detail::traverse_once(geometry, seeds, nb, visitors);
 
   RestrictedVoronoiDiagram rvd;
   rvd.seeds = seeds;

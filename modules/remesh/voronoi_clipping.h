@@ -300,4 +300,20 @@ inline int resolve_threads(int requested) { return requested > 0 ? requested : o
 /// waking and synchronising threads (large on a loaded machine) exceeds the work.
 inline int active_threads(int threads, long work) { return work < 8192 ? 1 : threads; }
 
+/// traverse_restricted_polygons() once over the whole model, with fresh traversal states and no
+/// hint, one thread per visitor, with the model's density or without.
+template <class Visitor>
+void traverse_once(const ModelGeometry& geometry, const std::vector<Vec3>& seeds,
+                   const SeedNeighbours& nb, std::vector<Visitor>& visitors) {
+  const int n = static_cast<int>(seeds.size()), threads = static_cast<int>(visitors.size());
+  std::vector<int> hint;
+  std::vector<TraversalState> states(visitors.size());
+  if (geometry.has_density())
+    traverse_restricted_polygons<true>(geometry, seeds.data(), n, nb, hint, states, visitors,
+                                       threads);
+  else
+    traverse_restricted_polygons<false>(geometry, seeds.data(), n, nb, hint, states, visitors,
+                                        threads);
+}
+
 }  // namespace voroseal::rvd_detail

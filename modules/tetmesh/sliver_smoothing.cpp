@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "framework/core/edge_key.h"
 #include "framework/geometry/closest_point.h"
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
@@ -93,12 +94,8 @@ SurfacePoints classify(const VolumeMesh& mesh, const Incidence& triangles_at) {
   std::vector<Side> sides;
   sides.reserve(3 * mesh.triangles.size());
   for (long t = 0; t < static_cast<long>(mesh.triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      sides.push_back({(static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-                           static_cast<std::uint32_t>(std::max(a, b)),
-                       part_of(t)});
-    }
+    for (int k = 0; k < 3; ++k)
+      sides.push_back({edge_key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), part_of(t)});
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
     return x.key != y.key ? x.key < y.key : x.part < y.part;
   });
@@ -112,7 +109,7 @@ SurfacePoints classify(const VolumeMesh& mesh, const Incidence& triangles_at) {
     while (j < sides.size() && sides[j].key == sides[i].key) parts.push_back(sides[j++].part);
     const bool contact = !(parts.size() == 2 && parts[0] == parts[1]);
     if (contact) {
-      const int a = static_cast<int>(sides[i].key >> 32), b = static_cast<int>(sides[i].key);
+      const int a = edge_key_first(sides[i].key), b = edge_key_second(sides[i].key);
       for (const auto& [v, w] : {std::pair<int, int>{a, b}, std::pair<int, int>{b, a}}) {
         const int n = contact_edges[v]++;
         if (n < 2) {

@@ -1020,12 +1020,15 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
   smoothing.surface_slide = needle_filled ? 0.0 : options.surface_slide;
   for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
     smoothing.region_volume_bound.push_back(options.volume_bound(r));
-  const double before = min_dihedral(mesh);
+  // The minimum before is measured for the debug line only: a pass over every tet.
+  const bool debug = log.level() >= LogLevel::Debug;
+  const double before = debug ? min_dihedral(mesh) : 0.0;
   const SliverSmoothingResult moved = smooth_sliver_points(mesh, smoothing);
   info.smoothed_points = moved.moved;
   info.slid_points = moved.moved_surface;
   const double took = seconds_since(start);
   seconds += took;
+  if (!debug) return;
   log.debug("tetmesh: smoothing moved " + std::to_string(moved.moved) + " interior and slid " +
             std::to_string(moved.moved_surface) + " surface points of " +
             std::to_string(moved.candidates) + " in " + std::to_string(moved.passes) +
