@@ -911,6 +911,13 @@ TEST(Tetrahedralize, OptionsOutOfRangeAreParameterErrors) {
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
   o.polish_dihedral_deg = 70;
   EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o = TetmeshOptions{};
+  o.surface_slide = -0.01;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o.surface_slide = 2 * kMaxSurfaceSlide;
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
+  o.surface_slide = std::nan("");
+  EXPECT_THROW(tetrahedralize(model, o, log), ParameterError);
 }
 
 TEST(TetgenRun, ReturnsCodesAndFillsTheOutput) {
