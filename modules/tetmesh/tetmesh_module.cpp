@@ -147,14 +147,17 @@ class TetmeshModule : public Module {
                            "0: TetGen's own thresholds (165/179)"};
     optimise.min = 0.0;
     optimise.max = 179.9;
-    ParameterSpec refine{"refine-surface-below", ParameterType::Double, 6.0,
-                         "bisect the surface edges under tets flatter than this (degrees) that no interior point "
-                         "opens (a layer thinner than its triangles) and mesh again: same surfaces, finer "
-                         "triangles there; 0 keeps the surface triangles exactly"};
+    ParameterSpec refine{
+        "refine-surface-below", ParameterType::Double, TetmeshOptions{}.refine_surface_below_deg,
+        "bisect the surface edges under tets flatter than this (degrees) that no interior point "
+        "opens (a layer thinner than its triangles) and mesh again, under the flattest first: "
+        "same surfaces, finer triangles there; kept when the tets are better; 0 keeps the "
+        "surface triangles exactly"};
     refine.min = 0.0;
     refine.max = 60.0;
-    ParameterSpec rounds{"refine-surface-rounds", ParameterType::Int, 4,
-                         "at most this many surface bisection rounds (each halves the edges it splits)"};
+    ParameterSpec rounds{
+        "refine-surface-rounds", ParameterType::Int, TetmeshOptions{}.refine_surface_rounds,
+        "at most this many surface bisection rounds (each halves the edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
     ParameterSpec polish{

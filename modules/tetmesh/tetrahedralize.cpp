@@ -8,7 +8,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <optional>
 #include <random>
 #include <regex>
 #include <set>
@@ -1038,35 +1037,43 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
 }
 
-/// A mesh and what made it: the one before the surface bisection rounds is polished too.
+/// A mesh and what made it: the surfaces as given, against their bisection.
 struct Candidate {
   ConvertedMesh mesh;
   TetmeshRun info;
 };
 
-/// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg): the surface edges
-/// under the flattest tets are bisected and TetGen runs again, as long as the smallest dihedral
-/// angle rises. `best` and `info` become those of the last round kept, `before_rounds` what
-/// they were before the first.
-void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
-                    TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
-                    std::optional<Candidate>& before_rounds, double& smoothing_seconds) {
+/// True when the surface bisection rounds apply to `best`: the surfaces kept and not
+/// needle-filled, and a tet flatter than TetmeshOptions::refine_surface_below_deg after the
+/// smoothing (which runs here: the rounds bisect under the tets it leaves flat).
+bool wants_surface_rounds(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                          TetmeshRun& info, ConvertedMesh& best, double& smoothing_seconds) {
   const double bound = options.refine_surface_below_deg;
-  if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model)) return;
-  // The rounds bisect under the tets the smoothing leaves flat, and judge meshes after it.
+  if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model))
+    return false;
   smooth(options, log, info, best, smoothing_seconds);
+  return min_dihedral(best.mesh) < bound;
+}
+
+/// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg) under the tets
+/// flatter than `bound_deg`: the surface edges under them are bisected and TetGen runs again, as
+/// long as the smallest dihedral angle rises. `best` and `info` become those of the last round
+/// kept.
+void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
+                    double bound_deg, TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
+                    double& smoothing_seconds) {
   double best_angle = min_dihedral(best.mesh);
   std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
   const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
-  int bisected = 0;
+  int bisected = 0, rounds = 0;
   bool spent = info.extra_time_spent;
-  for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound; ++round) {
+  for (int round = 1; round <= options.refine_surface_rounds && best_angle < bound_deg; ++round) {
     if (!extra.allows_another()) {
       spent = true;
       break;
     }
     const StructuralModel& from = refined ? *refined : model;
-    const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound);
+    const std::vector<std::array<int, 2>> edges = edges_under_flat_tets(from, best.mesh, bound_deg);
     if (edges.empty()) break;  // every tet below the bound is in a wedge
     auto next = std::make_shared<StructuralModel>(from);
     TetmeshRun trial;
@@ -1076,34 +1083,38 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
       split = bisect_edges(*next, edges);
       mesh = mesh_with_tetgen(*next, options, log, trial, extra);
     } catch (const MesherError& e) {
-      log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) + " failed (" + e.what() +
-                "); keeping the previous mesh");
+      log.debug(std::string("tetmesh: surface bisection round ") + std::to_string(round) +
+                " failed (" + e.what() + "); keeping the previous mesh");
       break;
     }
     spent = spent || trial.extra_time_spent;
     smooth(options, log, trial, mesh, smoothing_seconds);
     const double angle = min_dihedral(mesh.mesh);
-    log.debug("tetmesh: surface bisection round " + std::to_string(round) + ": " + std::to_string(split) +
-              " surface edges split, min dihedral " + number(angle) + " deg (was " + number(best_angle) + ")");
+    log.debug("tetmesh: surface bisection round " + std::to_string(round) + " under " +
+              number(bound_deg) + " deg: " + std::to_string(split) +
+              " surface edges split, min dihedral " + number(angle) + " deg (was " +
+              number(best_angle) + ")");
     if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
     if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
     bisected += split;
-    trial.surface_rounds = round;
-    if (!before_rounds) before_rounds = Candidate{std::move(best), info};
+    rounds = round;
     info = std::move(trial);
     best = std::move(mesh);
     best_angle = angle;
     refined = std::move(next);
   }
+  info.surface_rounds = rounds;
   info.bisected_edges = bisected;
   info.extra_time_spent = spent;
   info.refined_model = refined;
   info.size_rounds = size_rounds;
   info.size_bisected_edges = size_edges;
   if (bisected > 0)
-    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " + std::to_string(info.surface_rounds) +
-             " rounds (same surfaces, finer triangles) under tets flatter than " + number(bound) +
-             " deg: min dihedral " + number(best_angle) + " deg");
+    log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
+             std::to_string(rounds) +
+             " rounds (same surfaces, finer triangles) under tets flatter "
+             "than " +
+             number(bound_deg) + " deg: min dihedral " + number(best_angle) + " deg");
 }
 
 /// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
@@ -1229,24 +1240,52 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   ConvertedMesh best = mesh_with_tetgen(model, options, log, info, extra);
   const auto first_tets_below = info.tetgen_tets_below;  // TetGen's own mesh, for the report
   refine_for_size(model, options, log, info, best, extra);
-  std::optional<Candidate> before_rounds;
   double smoothing_seconds = 0.0;
-  refine_surface(model, options, log, info, best, extra, before_rounds, smoothing_seconds);
-  polish(model, options, log, info, best, extra, smoothing_seconds);
-  // The rounds raised the minimum, but their finer triangles can leave the polish less to gain:
-  // the mesh before them is polished too and the better of the two kept.
-  if (before_rounds) {
-    polish(model, options, log, before_rounds->info, before_rounds->mesh, extra, smoothing_seconds);
-    smooth(options, log, info, best, smoothing_seconds);
-    smooth(options, log, before_rounds->info, before_rounds->mesh, smoothing_seconds);
-    info.extra_time_spent = info.extra_time_spent || before_rounds->info.extra_time_spent;
-    if (better(before_rounds->mesh.mesh, best.mesh)) {
-      log.info("tetmesh: the surfaces as given polish better than their bisection (min dihedral " +
-               number(min_dihedral(before_rounds->mesh.mesh)) + " deg): bisection dropped");
-      before_rounds->info.extra_time_spent = info.extra_time_spent;
-      info = std::move(before_rounds->info);
-      best = std::move(before_rounds->mesh);
+  if (!wants_surface_rounds(model, options, log, info, best, smoothing_seconds)) {
+    polish(model, options, log, info, best, extra, smoothing_seconds);
+  } else {
+    // The rounds raise the minimum, but their finer triangles can leave the polish less to gain:
+    // the mesh of the surfaces as given is polished, and so is the last mesh of each set of
+    // rounds, and the best is kept. The surfaces as given come first, so the rounds spend only
+    // what is left of the time. Two sets of rounds start from the surfaces as given: under the
+    // flattest tets alone (kFirstSetShare), which splits fewer edges and makes fewer new
+    // flat tets, then under all the tets below the bound, unless the first reached it.
+    const ConvertedMesh as_given = best;
+    const TetmeshRun as_given_info = info;
+    std::vector<Candidate> candidates;
+    const auto add_candidate = [&](ConvertedMesh mesh, TetmeshRun run) {
+      candidates.push_back(Candidate{std::move(mesh), std::move(run)});
+      Candidate& c = candidates.back();
+      polish(model, options, log, c.info, c.mesh, extra, smoothing_seconds);
+      smooth(options, log, c.info, c.mesh, smoothing_seconds);
+    };
+    add_candidate(as_given, as_given_info);
+    const double bound = options.refine_surface_below_deg;
+    bool spent = false;
+    for (const double below : {kFirstSetShare * bound, bound}) {
+      const auto reached = [&](const Candidate& c) { return min_dihedral(c.mesh.mesh) >= bound; };
+      if (!(min_dihedral(as_given.mesh) < below) ||
+          std::any_of(candidates.begin(), candidates.end(), reached))
+        continue;
+      best = as_given;
+      info = as_given_info;
+      refine_surface(model, options, log, below, info, best, extra, smoothing_seconds);
+      spent = spent || info.extra_time_spent;  // rounds not kept count too
+      if (info.surface_rounds > 0) add_candidate(std::move(best), std::move(info));
     }
+    size_t kept = 0;
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      spent = spent || candidates[i].info.extra_time_spent;
+      if (better(candidates[i].mesh.mesh, candidates[kept].mesh.mesh)) kept = i;
+    }
+    if (kept == 0 && candidates.size() > 1)
+      log.info(
+          "tetmesh: the surfaces as given polish better than their bisection (min "
+          "dihedral " +
+          number(min_dihedral(candidates[0].mesh.mesh)) + " deg): bisection dropped");
+    info = std::move(candidates[kept].info);
+    best = std::move(candidates[kept].mesh);
+    info.extra_time_spent = spent;
   }
   smooth(options, log, info, best, smoothing_seconds);
   info.smoothing_seconds = smoothing_seconds;

@@ -23,6 +23,11 @@ constexpr double kMinExtraSeconds = 5.0;
 /// 15° (kCensusBin15Deg), the bound the polish run aims at.
 constexpr double kSmoothBelowDeg = kDihedralCensusDeg[kCensusBin15Deg];
 
+/// The first set of surface bisection rounds splits only under the tets flatter than this share
+/// of TetmeshOptions::refine_surface_below_deg: where flat tets are many, rounds that split
+/// fewer edges make fewer new flat tets.
+constexpr double kFirstSetShare = 0.5;
+
 /// TetmeshOptions::surface_slide by default: a hundredth of the local edge, far below the
 /// remesh's own distance to its input.
 constexpr double kSurfaceSlide = 0.01;
@@ -94,10 +99,12 @@ struct TetmeshOptions {
   /// within a factor 2 of angle) and TetGen runs again, as long as the smallest dihedral angle
   /// rises. These are mostly tets across a layer thinner than its triangles are wide: all four
   /// vertices on the layer's two sides, angles of about 1.4 × thickness / edge radians, halved
-  /// edges double them. The output triangles are then the finer ones (TetmeshRun::refined_model);
-  /// 0 keeps the model's triangles exactly.
-  double refine_surface_below_deg = 6.0;
-  /// At most this many bisection rounds (each one halves the edges it splits).
+  /// edges double them. Two sets of rounds start from the surfaces as given, under
+  /// kFirstSetShare of this bound and under the bound; the best of their meshes and the one
+  /// without bisection, each polished, is kept. The output triangles are then the finer ones
+  /// (TetmeshRun::refined_model); 0 keeps the model's triangles exactly.
+  double refine_surface_below_deg = 12.0;
+  /// At most this many bisection rounds in each set (each one halves the edges it splits).
   int refine_surface_rounds = 4;
   /// A last TetGen run to this dihedral bound (`q<ratio>/<angle>`, degrees), with its own
   /// sliver passes, on the surfaces and interior points the runs above kept: TetGen splits the

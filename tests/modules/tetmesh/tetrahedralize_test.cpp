@@ -640,6 +640,40 @@ TEST(Tetrahedralize, SurfaceBisectionOpensTheTetsAcrossAThinLayer) {
   EXPECT_EQ(none.bisected_edges, 0);
 }
 
+TEST(Tetrahedralize, SurfaceBisectionNeverEndsBelowTheSurfacesAsGiven) {
+  // The mesh of the surfaces as given is polished and weighed against each set of rounds (under
+  // the flattest tets, then under all below the bound): whatever the bound, the bisection
+  // never leaves the smallest dihedral angle lower than without it, and it raises it across a
+  // layer thinner than its triangles.
+  Logger log = quiet_logger();
+  struct Case {
+    double thickness;
+    std::vector<double> bounds;
+  };
+  for (const Case& c : {Case{0.02, {6.0, 12.0, 20.0}}, Case{0.05, {20.0}}}) {
+    const StructuralModel model = build_model(test::thin_layer_box(8, c.thickness));
+    TetmeshOptions options;
+    options.extra_time = 0.0;  // every round: the outcome must not depend on the machine
+    options.refine_surface_below_deg = 0.0;
+    const double as_given = measure_volume(tetrahedralize(model, options, log)).min_dihedral_deg;
+    for (const double bound : c.bounds) {
+      options.refine_surface_below_deg = bound;
+      TetmeshRun run;
+      const VolumeMesh mesh = tetrahedralize(model, options, log, &run);
+      const double angle = measure_volume(mesh).min_dihedral_deg;
+      std::fprintf(stderr,
+                   "[figures] layer %.2f, bisection under %.0f deg: min dihedral %.2f -> %.2f "
+                   "(%d rounds, %d edges)\n",
+                   c.thickness, bound, as_given, angle, run.surface_rounds, run.bisected_edges);
+      EXPECT_GE(angle, as_given) << "thickness " << c.thickness << ", bound " << bound;
+      expect_valid_mesh(run.refined_model ? *run.refined_model : model, mesh);
+      if (c.thickness > 0.02) continue;
+      EXPECT_GT(angle, as_given + 1.0) << "bound " << bound;
+      EXPECT_GE(run.surface_rounds, 1);
+    }
+  }
+}
+
 TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
   // A layer 0.01 thick remeshed with cells of about 0.2: whatever TetGen does, the tets across
   // it join vertices 0.2 apart on one side to vertices 0.01 above on the other. The remesher's
