@@ -1247,9 +1247,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     // The rounds raise the minimum, but their finer triangles can leave the polish less to gain:
     // the mesh of the surfaces as given is polished, and so is the last mesh of each set of
     // rounds, and the best is kept. The surfaces as given come first, so the rounds spend only
-    // what is left of the time. Two sets of rounds start from the surfaces as given: under the
-    // flattest tets alone (kFirstSetShare), which splits fewer edges and makes fewer new
-    // flat tets, then under all the tets below the bound, unless the first reached it.
+    // what is left of the time. Each set starts from the surfaces as given, the flattest tets
+    // first (kRoundSets): splitting fewer edges makes fewer new flat tets. The sets stop once
+    // one reaches the bound.
     const ConvertedMesh as_given = best;
     const TetmeshRun as_given_info = info;
     std::vector<Candidate> candidates;
@@ -1260,13 +1260,14 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       smooth(options, log, c.info, c.mesh, smoothing_seconds);
     };
     add_candidate(as_given, as_given_info);
-    const double bound = options.refine_surface_below_deg;
+    const double bound = options.refine_surface_below_deg, lowest = min_dihedral(as_given.mesh);
+    std::vector<double> sets;  // the bound, halved while tets are below it, the lowest first
+    for (double below = bound; below > lowest && sets.size() < kRoundSets; below *= 0.5)
+      sets.insert(sets.begin(), below);
     bool spent = false;
-    for (const double below : {kFirstSetShare * bound, bound}) {
+    for (const double below : sets) {
       const auto reached = [&](const Candidate& c) { return min_dihedral(c.mesh.mesh) >= bound; };
-      if (!(min_dihedral(as_given.mesh) < below) ||
-          std::any_of(candidates.begin(), candidates.end(), reached))
-        continue;
+      if (std::any_of(candidates.begin(), candidates.end(), reached)) break;
       best = as_given;
       info = as_given_info;
       refine_surface(model, options, log, below, info, best, extra, smoothing_seconds);
@@ -1279,10 +1280,8 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       if (better(candidates[i].mesh.mesh, candidates[kept].mesh.mesh)) kept = i;
     }
     if (kept == 0 && candidates.size() > 1)
-      log.info(
-          "tetmesh: the surfaces as given polish better than their bisection (min "
-          "dihedral " +
-          number(min_dihedral(candidates[0].mesh.mesh)) + " deg): bisection dropped");
+      log.info("tetmesh: the surfaces as given polish better than their bisection (min dihedral " +
+               number(min_dihedral(candidates[0].mesh.mesh)) + " deg): bisection dropped");
     info = std::move(candidates[kept].info);
     best = std::move(candidates[kept].mesh);
     info.extra_time_spent = spent;

@@ -23,10 +23,10 @@ constexpr double kMinExtraSeconds = 5.0;
 /// 15° (kCensusBin15Deg), the bound the polish run aims at.
 constexpr double kSmoothBelowDeg = kDihedralCensusDeg[kCensusBin15Deg];
 
-/// The first set of surface bisection rounds splits only under the tets flatter than this share
-/// of TetmeshOptions::refine_surface_below_deg: where flat tets are many, rounds that split
-/// fewer edges make fewer new flat tets.
-constexpr double kFirstSetShare = 0.5;
+/// The surface bisection rounds run in up to this many sets, under TetmeshOptions::
+/// refine_surface_below_deg halved this many times less one, then doubled set after set: where
+/// flat tets are many, rounds that split fewer edges (under the flattest) make fewer new ones.
+constexpr int kRoundSets = 3;
 
 /// TetmeshOptions::surface_slide by default: a hundredth of the local edge, far below the
 /// remesh's own distance to its input.
@@ -99,8 +99,8 @@ struct TetmeshOptions {
   /// within a factor 2 of angle) and TetGen runs again, as long as the smallest dihedral angle
   /// rises. These are mostly tets across a layer thinner than its triangles are wide: all four
   /// vertices on the layer's two sides, angles of about 1.4 × thickness / edge radians, halved
-  /// edges double them. Two sets of rounds start from the surfaces as given, under
-  /// kFirstSetShare of this bound and under the bound; the best of their meshes and the one
+  /// edges double them. Sets of rounds start from the surfaces as given, under a quarter of
+  /// this bound, half of it, and the bound (kRoundSets); the best of their meshes and the one
   /// without bisection, each polished, is kept. The output triangles are then the finer ones
   /// (TetmeshRun::refined_model); 0 keeps the model's triangles exactly.
   double refine_surface_below_deg = 12.0;
