@@ -82,6 +82,29 @@ void Editor::rollback_to(size_t mark) {
   journal_.resize(mark);
 }
 
+void Editor::touched_since(size_t mark, std::vector<int>& out) const {
+  out.clear();
+  for (size_t i = mark; i < journal_.size(); ++i) {
+    const Change& c = journal_[i];
+    switch (c.kind) {
+      case Change::Moved:
+        out.push_back(c.index);
+        break;
+      case Change::Changed:
+        out.insert(out.end(), c.triangle.begin(), c.triangle.end());
+        [[fallthrough]];
+      case Change::Added:
+        out.insert(out.end(), s_.triangles[c.index].begin(), s_.triangles[c.index].end());
+        break;
+      case Change::Feature:
+      case Change::Bend:
+        break;  // no geometry, no incidence
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 Violations Editor::violations(const std::vector<int>& triangles) {
   Violations out;
   ++epoch_;

@@ -325,6 +325,20 @@ class Editor {
   // `topology`: also the pinches (edits that move vertices only cannot change them).
   Census census(bool topology = true);
 
+  // ---- for the census kept phase after phase (cleanup_census.h) ----
+  // The vertices the edits journaled since `mark` touched, sorted: moved, or of a triangle
+  // changed, added or killed (as it was and as it is).
+  void touched_since(size_t mark, std::vector<int>& out) const;
+  // Extra fans of a part around v (Violations::pinches).
+  int extra_fans(int v) { return pinches(v); }
+  // The census's crossing test of two alive, non-degenerate triangles: they intersect beyond
+  // what they share (triangles_intersect()) and the crossing is not the input's.
+  bool crossing(int t, int c) const {
+    return !inherited_crossing(t, c) && !adjacent_apart(t, c) &&
+           triangles_intersect(s_.vertices, s_.triangles[t], s_.triangles[c]);
+  }
+  void bounds(int t, Vec3& lo, Vec3& hi) const { box(t, lo, hi); }
+
   // Alive triangles whose bounding box meets [lo, hi] (each once).
   template <class F>
   void candidates(const Vec3& lo, const Vec3& hi, F&& f) {

@@ -1,6 +1,7 @@
 #include "modules/remesh/cleanup_phase.h"
 
 #include <chrono>
+#include <optional>
 
 namespace voroseal::cleanup {
 
@@ -19,18 +20,21 @@ bool accepts(PhaseCheck check, const Violations& before, const Violations& after
 // defects, up to the first that does: a phase of many rounds then loses only what follows the
 // round that made a defect, not all the others did (ten smoothing passes for one leak).
 void keep_rounds(Editor& e, const PhaseSpec& phase, const CleanupContext& context,
-                 Violations& defects, CleanupCounts& kept, PhaseRecord& record) {
+                 DefectCensus& defects, CleanupCounts& kept, PhaseRecord& record) {
   for (int round = 0; round < record.rounds; ++round) {
     e.begin();
+    const size_t mark = e.mark();
     const PhaseCounts counts = phase.round(e, context);
-    const Violations after = e.changed_in_transaction() ? e.census().count : defects;
-    if (!accepts(phase.check, defects, after)) {
+    // Nothing kept in the journal: nothing changed, the census stands.
+    std::optional<DefectCensus> after;
+    if (e.changed_in_transaction()) after = defects.after_edits(e, mark);
+    if (after && !accepts(phase.check, defects.count(), after->count())) {
       e.rollback();
       break;
     }
     e.commit();
     kept.add(counts.counts);
-    defects = after;
+    if (after) defects = std::move(*after);
     record.rounds_kept = round + 1;
     if (counts.progress == 0) break;
   }
@@ -39,14 +43,15 @@ void keep_rounds(Editor& e, const PhaseSpec& phase, const CleanupContext& contex
 }  // namespace
 
 PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& context,
-                      Violations& defects, CleanupCounts& kept) {
+                      DefectCensus& defects, CleanupCounts& kept) {
   const auto t0 = std::chrono::steady_clock::now();
   PhaseRecord record;
   record.name = phase.name;
-  record.defects_before = defects.total();
-  record.invalid_before = defects.invalid();
+  record.defects_before = defects.count().total();
+  record.invalid_before = defects.count().invalid();
   CleanupCounts counts;
   e.begin();
+  const size_t mark = e.mark();
   while (record.rounds < phase.rounds) {
     const PhaseCounts round = phase.round(e, context);
     ++record.rounds;
@@ -55,15 +60,17 @@ PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& c
   }
   record.edits = counts.edits();
   // Nothing kept in the journal: nothing changed, the census stands.
-  const Violations after = e.changed_in_transaction() ? e.census().count : defects;
-  record.defects_after = after.total();
-  record.invalid_after = after.invalid();
-  record.kept = accepts(phase.check, defects, after);
+  std::optional<DefectCensus> after;
+  if (e.changed_in_transaction()) after = defects.after_edits(e, mark);
+  const Violations& count = after ? after->count() : defects.count();
+  record.defects_after = count.total();
+  record.invalid_after = count.invalid();
+  record.kept = accepts(phase.check, defects.count(), count);
   if (record.kept) {
     record.rounds_kept = record.rounds;
     e.commit();
     kept.add(counts);
-    defects = after;
+    if (after) defects = std::move(*after);
   } else {
     e.rollback();
     if (record.rounds > 1) keep_rounds(e, phase, context, defects, kept, record);

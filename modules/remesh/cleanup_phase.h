@@ -4,6 +4,7 @@
 // Internal to the remesh module (see mesh_cleanup.h, cleanup_schedule.h).
 #pragma once
 
+#include "modules/remesh/cleanup_census.h"
 #include "modules/remesh/cleanup_editor.h"
 #include "modules/remesh/cleanup_report.h"
 #include "modules/remesh/cleanup_thresholds.h"
@@ -49,6 +50,6 @@ struct PhaseSpec {
 // takes the census: the phase is kept when `phase.check` accepts it against `defects` (the
 // census before it), its counts added to `kept` and `defects` updated; otherwise rolled back.
 PhaseRecord run_phase(Editor& e, const PhaseSpec& phase, const CleanupContext& context,
-                      Violations& defects, CleanupCounts& kept);
+                      DefectCensus& defects, CleanupCounts& kept);
 
 }  // namespace voroseal::cleanup

@@ -28,14 +28,15 @@ CleanupReport clean_up(RemeshedSurface& surface, const StructuralModel& input,
       if (surface.features[v].kind == VertexFeature::Contact && surface.features[v].pinned)
         e.mark_bend(static_cast<int>(v));
   const CleanupContext context{projector, options, options.thresholds, report};
-  Violations defects = e.census().count;
+  DefectCensus census(e);
   for (const PhaseSpec& phase : cleanup_schedule(options.thresholds)) {
     if (phase.rounds <= 0 || !phase.enabled(context)) continue;
     std::optional<ProgressStep> step;
     if (progress) step.emplace(*progress, phase.name);
-    report.phases.push_back(run_phase(e, phase, context, defects, report));
+    report.phases.push_back(run_phase(e, phase, context, census, report));
     if (step) step->finish();
   }
+  const Violations& defects = census.count();
   report.intersections_left = defects.crossings;
   report.holes_left = defects.holes;
   report.leaks_left = defects.leaks;

@@ -2,7 +2,10 @@
 // knows, made once, is counted exactly, and nothing else is.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "framework/model/model_builder.h"
+#include "modules/remesh/cleanup_census.h"
 #include "modules/remesh/cleanup_editor.h"
 #include "tests/modules/remesh/remeshed_input.h"
 #include "tests/modules/remesh/synthetic_surfaces.h"
@@ -11,6 +14,7 @@
 namespace voroseal {
 namespace {
 
+using cleanup::DefectCensus;
 using cleanup::Editor;
 using cleanup::Violations;
 
@@ -122,6 +126,83 @@ TEST(CleanupCensus, ADegenerateTriangleHasCollinearVertices) {
   Sheet m;
   m.triangle(m.add({0, 0, 0}), m.add({1, 0, 0}), m.add({2, 0, 0}));
   expect_counts(census_of(m.s, m.input), 0, 0, 0, 1, 0, 0);
+}
+
+void expect_same(const Violations& a, const Violations& b, int batch) {
+  EXPECT_EQ(a.holes, b.holes) << "batch " << batch;
+  EXPECT_EQ(a.leaks, b.leaks) << "batch " << batch;
+  EXPECT_EQ(a.crossings, b.crossings) << "batch " << batch;
+  EXPECT_EQ(a.degenerate, b.degenerate) << "batch " << batch;
+  EXPECT_EQ(a.pinches, b.pinches) << "batch " << batch;
+  EXPECT_EQ(a.folds, b.folds) << "batch " << batch;
+}
+
+TEST(CleanupCensus, CountedAgainAroundTheEditsItIsTheWholeCensus) {
+  // Batches of random edits (vertex moves that make crossings, folds and flat triangles,
+  // triangles killed, turned over, doubled in another part), some kept and some rolled back,
+  // one batch moving most vertices: after each, the census counted again around the edits is
+  // the whole census, kind by kind.
+  const StructuralModel input = build_model(test::lattice_box(6, true));
+  RemeshedSurface s = test::as_remeshed(input);
+  Editor e(s, input);
+  DefectCensus census(e);
+  std::mt19937 random(7);
+  const auto pick = [&](size_t n) { return static_cast<int>(random() % n); };
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double step = 1.5 * e.mean_edge();
+  Violations seen;  // the most of each kind met, to show the batches made every kind
+  for (int batch = 0; batch < 60; ++batch) {
+    e.begin();
+    const size_t mark = e.mark();
+    const int edits = batch == 30 ? 0 : 1 + pick(4);
+    if (batch == 30)  // most vertices: the whole census is taken
+      for (size_t v = 0; v < e.mesh().vertices.size(); v += 2)
+        e.move(static_cast<int>(v), e.p(static_cast<int>(v)) + Vec3(0, 0, 0.01 * step));
+    for (int k = 0; k < edits; ++k) {
+      const int t = pick(e.mesh().triangles.size());
+      if (!e.alive(t)) continue;
+      const Triangle f = e.mesh().triangles[t];
+      switch (pick(6)) {
+        case 0:
+        case 1:
+        case 2: {
+          const int v = f[pick(3)];
+          e.move(v, e.p(v) + step * Vec3(unit(random), unit(random), unit(random)));
+          break;
+        }
+        case 3:
+          e.kill(t);
+          break;
+        case 4:
+          e.set_triangle(t, {f[0], f[2], f[1]});
+          break;
+        default:
+          e.add_triangle(f, (e.mesh().triangle_part[t] + 1) % static_cast<int>(input.parts.size()));
+      }
+    }
+    const DefectCensus around = census.after_edits(e, mark);
+    const DefectCensus whole(e);
+    expect_same(around.count(), whole.count(), batch);
+    const Violations& c = whole.count();
+    seen = {std::max(seen.holes, c.holes),         std::max(seen.leaks, c.leaks),
+            std::max(seen.crossings, c.crossings), std::max(seen.degenerate, c.degenerate),
+            std::max(seen.pinches, c.pinches),     std::max(seen.folds, c.folds)};
+    if (batch % 3 == 2) {
+      e.rollback();
+      expect_same(census.count(), DefectCensus(e).count(), batch);
+    } else {
+      e.commit();
+      census = around;
+    }
+  }
+  std::fprintf(stderr,
+               "[figures] most defects after a batch: %d holes, %d leaks, %d crossings, "
+               "%d degenerate, %d pinches, %d folds\n",
+               seen.holes, seen.leaks, seen.crossings, seen.degenerate, seen.pinches, seen.folds);
+  EXPECT_GT(seen.holes, 0);
+  EXPECT_GT(seen.leaks, 0);
+  EXPECT_GT(seen.crossings, 0);
+  EXPECT_GT(seen.folds + seen.degenerate, 0);
 }
 
 }  // namespace

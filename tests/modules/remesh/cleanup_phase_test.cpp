@@ -34,13 +34,13 @@ TEST(CleanupPhase, APhaseThatOpensAHoleIsRolledBack) {
                           return r;
                         },
                         3, nullptr};
-  Violations defects = e.census().count;
+  DefectCensus defects(e);
   const PhaseRecord record = run_phase(e, opens, f.context, defects, f.kept);
   EXPECT_FALSE(record.kept);
   EXPECT_EQ(record.rounds, 1);  // no progress: a fixed point after one round
   EXPECT_EQ(record.defects_before, 0);
   EXPECT_GT(record.defects_after, 0);
-  EXPECT_EQ(defects.total(), 0);
+  EXPECT_EQ(defects.count().total(), 0);
   EXPECT_EQ(f.kept.flips, 0);  // the counts of a rolled-back phase are not kept
   EXPECT_TRUE(e.alive(0));
   EXPECT_EQ(e.census().count.total(), 0);
@@ -59,7 +59,7 @@ TEST(CleanupPhase, APhaseThatMakesNothingWorseIsKeptAndRunsToItsBound) {
                           return r;
                         },
                         3, nullptr};
-  Violations defects = e.census().count;
+  DefectCensus defects(e);
   const PhaseRecord record = run_phase(e, moves, f.context, defects, f.kept);
   EXPECT_TRUE(record.kept);
   EXPECT_EQ(record.rounds, 3);
@@ -101,8 +101,8 @@ PhaseCounts fold(Editor& e, const CleanupContext&) {
 TEST(CleanupPhase, APhaseThatOnlyAddsAFoldIsRolledBack) {
   FoldingSheet f;
   Editor e(f.s, f.input);
-  Violations defects = e.census().count;
-  ASSERT_EQ(defects.degenerate, 1);
+  DefectCensus defects(e);
+  ASSERT_EQ(defects.count().degenerate, 1);
   const PhaseRecord record = run_phase(e, {"folds", fold<false>, 1, nullptr}, f.context, defects,
                                        f.kept);
   EXPECT_FALSE(record.kept);
@@ -114,12 +114,12 @@ TEST(CleanupPhase, APhaseThatOnlyAddsAFoldIsRolledBack) {
 TEST(CleanupPhase, APhaseMayTradeAFoldForAnInvalidDefect) {
   FoldingSheet f;
   Editor e(f.s, f.input);
-  Violations defects = e.census().count;
+  DefectCensus defects(e);
   const PhaseRecord record = run_phase(e, {"mends", fold<true>, 1, nullptr}, f.context, defects,
                                        f.kept);
   EXPECT_TRUE(record.kept);
-  EXPECT_EQ(defects.degenerate, 0);
-  EXPECT_EQ(defects.folds, 1);
+  EXPECT_EQ(defects.count().degenerate, 0);
+  EXPECT_EQ(defects.count().folds, 1);
   EXPECT_EQ(f.kept.sharp_moves, 2);
 }
 
