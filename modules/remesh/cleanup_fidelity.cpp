@@ -49,17 +49,35 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
     const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
     return (projector.on_part(e.mesh().triangle_part[t], centroid) - centroid).norm();
   };
-  std::vector<std::pair<double, int>> strays;
-  for (size_t ti = 0; ti < e.mesh().triangles.size(); ++ti) {
+  // Measured in parallel, reading only: the stars are tidied first (Editor::star()).
+  const RemeshedSurface& s = e.mesh();
+  for (size_t v = 0; v < s.vertices.size(); ++v) e.star(static_cast<int>(v));
+  const auto line_edge = [&](int u, int v) {  // Editor::is_line_edge() without allocating
+    int count = 0, part = -1;
+    bool parts_differ = false;
+    for (int t : e.star(u)) {
+      if (!Editor::has(s.triangles[t], v)) continue;
+      if (count++ == 0) part = s.triangle_part[t];
+      parts_differ = parts_differ || s.triangle_part[t] != part;
+    }
+    return count != 2 || parts_differ;
+  };
+  const long n = static_cast<long>(s.triangles.size());
+  std::vector<double> stray(n, 0.0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long ti = 0; ti < n; ++ti) {
     const int t = static_cast<int>(ti);
     if (!e.alive(t)) continue;
-    const Triangle& f = e.mesh().triangles[t];
+    const Triangle& f = s.triangles[t];
     double far = centroid_stray(t);
     for (int i = 0; i < 3; ++i)
-      if (e.is_line_edge(f[i], f[(i + 1) % 3]))
+      if (line_edge(f[i], f[(i + 1) % 3]))
         far = std::max(far, contact_stray(f[i], f[(i + 1) % 3], nullptr));
-    if (far > tolerance) strays.emplace_back(far, t);
+    stray[ti] = far;
   }
+  std::vector<std::pair<double, int>> strays;
+  for (long t = 0; t < n; ++t)
+    if (stray[t] > tolerance) strays.emplace_back(stray[t], static_cast<int>(t));
   std::sort(strays.rbegin(), strays.rend());
   int splits = 0;
   for (const auto& [far, t] : strays) {

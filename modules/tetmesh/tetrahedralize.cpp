@@ -1037,7 +1037,7 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
 }
 
-/// A mesh and what made it: the surfaces as given, against their bisection.
+/// A mesh and what made it: of the surfaces as given, or of a set of bisection rounds.
 struct Candidate {
   ConvertedMesh mesh;
   TetmeshRun info;
@@ -1111,10 +1111,9 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   info.size_bisected_edges = size_edges;
   if (bisected > 0)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
-             std::to_string(rounds) +
-             " rounds (same surfaces, finer triangles) under tets flatter "
-             "than " +
-             number(bound_deg) + " deg: min dihedral " + number(best_angle) + " deg");
+             std::to_string(rounds) + " rounds (same surfaces, finer triangles) under tets " +
+             "flatter than " + number(bound_deg) + " deg: min dihedral " + number(best_angle) +
+             " deg");
 }
 
 /// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
