@@ -155,9 +155,11 @@ class TetmeshModule : public Module {
         "surface triangles exactly"};
     refine.min = 0.0;
     refine.max = 60.0;
-    ParameterSpec rounds{
-        "refine-surface-rounds", ParameterType::Int, TetmeshOptions{}.refine_surface_rounds,
-        "at most this many surface bisection rounds (each halves the edges it splits)"};
+    ParameterSpec rounds{"refine-surface-rounds", ParameterType::Int,
+                         TetmeshOptions{}.refine_surface_rounds,
+                         "at most this many surface bisection rounds in each of its sets (under a "
+                         "quarter, half and all of --refine-surface-below; each round halves the "
+                         "edges it splits)"};
     rounds.min = 0;
     rounds.max = 10;
     ParameterSpec polish{
