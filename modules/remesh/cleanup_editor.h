@@ -171,10 +171,16 @@ class Editor {
     return false;
   }
   // A contact edge of the output: not exactly two triangles, or two of different parts.
+  // Reads only once u's star is tidy (star()), so it may run on several threads then.
   bool is_line_edge(int u, int v) {
-    std::vector<int> e;
-    edge_triangles(u, v, e);
-    return e.size() != 2 || s_.triangle_part[e[0]] != s_.triangle_part[e[1]];
+    int count = 0, part = -1;
+    bool parts_differ = false;
+    for (int t : star(u)) {
+      if (!has(s_.triangles[t], v)) continue;
+      if (count++ == 0) part = s_.triangle_part[t];
+      parts_differ = parts_differ || s_.triangle_part[t] != part;
+    }
+    return count != 2 || parts_differ;
   }
   void neighbours(int v, std::vector<int>& out) {
     out.clear();

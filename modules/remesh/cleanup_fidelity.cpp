@@ -52,16 +52,6 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
   // Measured in parallel, reading only: the stars are tidied first (Editor::star()).
   const RemeshedSurface& s = e.mesh();
   for (size_t v = 0; v < s.vertices.size(); ++v) e.star(static_cast<int>(v));
-  const auto line_edge = [&](int u, int v) {  // Editor::is_line_edge() without allocating
-    int count = 0, part = -1;
-    bool parts_differ = false;
-    for (int t : e.star(u)) {
-      if (!Editor::has(s.triangles[t], v)) continue;
-      if (count++ == 0) part = s.triangle_part[t];
-      parts_differ = parts_differ || s.triangle_part[t] != part;
-    }
-    return count != 2 || parts_differ;
-  };
   const long n = static_cast<long>(s.triangles.size());
   std::vector<double> stray(n, 0.0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -71,7 +61,7 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
     const Triangle& f = s.triangles[t];
     double far = centroid_stray(t);
     for (int i = 0; i < 3; ++i)
-      if (line_edge(f[i], f[(i + 1) % 3]))
+      if (e.is_line_edge(f[i], f[(i + 1) % 3]))
         far = std::max(far, contact_stray(f[i], f[(i + 1) % 3], nullptr));
     stray[ti] = far;
   }
