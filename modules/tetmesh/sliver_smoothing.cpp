@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "framework/core/edge_key.h"
@@ -143,9 +145,10 @@ struct Smoother {
   const Incidence& tets_at;
   const Incidence& triangles_at;
   const SurfacePoints& surface;
-  const std::vector<Vec3>& original;  // the vertices before the smoothing
+  const std::vector<Vec3>& original;  // the vertices the slide is measured from
   const std::vector<double>& bounds;
   double slide;
+  double counted_cosine;  // with kept_count_below_deg its cosine, else 2: none counted
   const std::vector<int>& parts = triangle_parts(mesh);
 
   // The cosine of the smallest dihedral angle of tet q (the largest of its six), or 2 when q
@@ -193,6 +196,17 @@ struct Smoother {
     for (long i = tets_at.begin(v); i < tets_at.end(v) && worst < stop; ++i)
       if (tets_at.items[i] != first) visit(tets_at.items[i]);
     return {worst, where};
+  }
+
+  // The tets of v's star flatter than counted_cosine allows, with v at p.
+  int star_flat(int v, const Vec3& p) const {
+    int flat = 0;
+    for (long i = tets_at.begin(v); i < tets_at.end(v); ++i) {
+      const Tetrahedron& t = mesh.tets[tets_at.items[i]];
+      const std::array<Vec3, 4> q{at(t[0], v, p), at(t[1], v, p), at(t[2], v, p), at(t[3], v, p)};
+      flat += worst_cosine(q) > counted_cosine;
+    }
+    return flat;
   }
 
   // The largest radius-edge ratio of v's tets with v at p.
@@ -284,10 +298,13 @@ struct Smoother {
     // A candidate is kept when its star is better, keeps its radius-edge ratios and, on a
     // surface, the surface allows it.
     const double ratio = std::max(kKeptRadiusEdge, star_radius_edge(v, start));
+    const bool counted = counted_cosine <= 1.0;
+    const int flat = counted ? star_flat(v, start) : 0;
     const auto better = [&](const Vec3& q, double& value, long& where) {
       const auto [c, at_tet] = star_worst(v, q, best, worst_tet);
       if (!(c < best) || star_radius_edge(v, q) > ratio) return false;
       if (motion != Motion::Free && !surface_allows(v, q, tolerance)) return false;
+      if (counted && star_flat(v, q) > flat) return false;
       value = c;
       where = at_tet;
       return true;
@@ -360,14 +377,21 @@ SliverSmoothingResult smooth_sliver_points(VolumeMesh& mesh,
   const Incidence tets_at(mesh.tets, mesh.vertices.size());
   const Incidence triangles_at(mesh.triangles, mesh.vertices.size());
   const SurfacePoints surface = classify(mesh, triangles_at);
-  const std::vector<Vec3> original = mesh.vertices;
+  if (!options.reference.empty() && options.reference.size() != mesh.vertices.size())
+    throw std::invalid_argument("smooth_sliver_points: a reference of " +
+                                std::to_string(options.reference.size()) + " vertices for " +
+                                std::to_string(mesh.vertices.size()));
+  const std::vector<Vec3> original = options.reference.empty() ? mesh.vertices : options.reference;
   Smoother smoother{mesh,
                     tets_at,
                     triangles_at,
                     surface,
                     original,
                     options.region_volume_bound,
-                    options.surface_slide};
+                    options.surface_slide,
+                    options.kept_count_below_deg > 0.0
+                        ? std::cos(options.kept_count_below_deg * M_PI / 180.0)
+                        : 2.0};
   const std::array<Vec3, 26> dirs = compass();
   const bool slide = options.surface_slide > 0.0;
   std::vector<char> flat(nt), candidate(nv), moved_once(nv, 0);

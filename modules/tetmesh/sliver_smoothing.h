@@ -29,6 +29,13 @@ struct SliverSmoothingOptions {
   /// How far the surfaces may move, relative to the mean edge at a sliding point; 0 keeps the
   /// surface points where they are.
   double surface_slide = 0.0;
+  /// When > 0, a move may not add to the tets of the point flatter than this (degrees): the
+  /// flattest rise without others falling under it.
+  double kept_count_below_deg = 0.0;
+  /// The vertices the slide is measured from: surface points slide on the triangles of these
+  /// positions, within surface_slide of them. Empty: the mesh's vertices as they are. A second
+  /// smoothing gets the vertices from before the first, so the slides do not add up.
+  std::vector<Vec3> reference;
 };
 
 struct SliverSmoothingResult {

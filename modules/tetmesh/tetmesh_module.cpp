@@ -181,6 +181,14 @@ class TetmeshModule : public Module {
         "surfaces are the slid ones); 0 keeps the surface points where they are"};
     slide.min = 0.0;
     slide.max = kMaxSurfaceSlide;
+    ParameterSpec flat_slide{
+        "flat-slide", ParameterType::Double, TetmeshOptions{}.flat_surface_slide,
+        "then, where tets stay flatter than " + std::to_string(static_cast<int>(kFlatTetDeg)) +
+            " deg, their surface points slide further: --surface-slide doubled up to this while "
+            "such tets remain (the surfaces move more only there); not above --surface-slide: "
+            "no further slide"};
+    flat_slide.min = 0.0;
+    flat_slide.max = kMaxSurfaceSlide;
     ParameterSpec size{
         "size-rounds", ParameterType::Int, 8,
         "with --max-volume and the surfaces kept: at most this many rounds of bisecting the "
@@ -196,9 +204,9 @@ class TetmeshModule : public Module {
             " s (0: no limit; the --max-volume rounds are never cut)"};
     extra.min = 0.0;
     extra.max = 1000.0;
-    return {output,     quality,   dihedral, volume,  region_size, surface_sizes,
-            size_field, gradation, keep,     slivers, optimise,    refine,
-            rounds,     polish,    smooth,   slide,   size,        extra};
+    return {output,    quality, dihedral,   volume,   region_size, surface_sizes, size_field,
+            gradation, keep,    slivers,    optimise, refine,      rounds,        polish,
+            smooth,    slide,   flat_slide, size,     extra};
   }
 
   void run(Context& context, const Parameters& parameters) const override {
@@ -231,6 +239,7 @@ class TetmeshModule : public Module {
     options.size_rounds = static_cast<int>(parameters.get_int("size-rounds"));
     options.smooth_points = parameters.get_bool("smooth");
     options.surface_slide = parameters.get_double("surface-slide");
+    options.flat_surface_slide = parameters.get_double("flat-slide");
     options.extra_time = parameters.get_double("extra-time");
 
     const auto start = std::chrono::steady_clock::now();
@@ -304,6 +313,7 @@ class TetmeshModule : public Module {
         {"polished", run.polished},
         {"smoothed_points", run.smoothed_points},
         {"slid_points", run.slid_points},
+        {"further_slide", run.further_slide},
         {"tets_below_deg",
          {{"tetgen", census(run.tetgen_tets_below)},
           {"before_smoothing", census(run.smoothing_tets_below)},

@@ -298,6 +298,7 @@ struct ConvertedMesh {
   long relabelled_tets = 0;   // tets TetGen left without a region
   std::vector<Vec3> interior_points;  // the sliver points TetGen got besides the PLC's
   bool smoothed = false;              // smooth() ran on it (see there)
+  std::vector<Vec3> unsmoothed;       // the vertices before smooth() moved them
 };
 
 ConvertedMesh to_volume_mesh(const StructuralModel& model, const PlcMap& map, const tetgenio& in, int plc_points,
@@ -1011,6 +1012,7 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
   info.smoothed_points = 0;
   info.slid_points = 0;
   if (!options.smooth_points) return;
+  candidate.unsmoothed = mesh.vertices;
   const auto start = std::chrono::steady_clock::now();
   SliverSmoothingOptions smoothing;
   smoothing.below_deg = kSmoothBelowDeg;
@@ -1035,6 +1037,51 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
             std::to_string(info.smoothing_tets_below[kCensusBin15Deg]) + " -> " +
             std::to_string(dihedral_census(mesh)[kCensusBin15Deg]) + ", min dihedral " +
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
+}
+
+/// The smoothing once more where tets stay flatter than kFlatTetDeg after it, their
+/// surface points allowed further (TetmeshOptions::flat_surface_slide): the slide doubles from
+/// surface_slide while such tets remain, measured from the surfaces before any smoothing. The
+/// surfaces move more only where the tets need it, and no tet ends flatter than before.
+void slide_further(const TetmeshOptions& options, Logger& log, TetmeshRun& info,
+                   ConvertedMesh& candidate, double& seconds) {
+  VolumeMesh& mesh = candidate.mesh;
+  if (!options.smooth_points || !(options.surface_slide > 0.0) ||
+      !(options.flat_surface_slide > options.surface_slide) ||
+      candidate.unsmoothed.size() != mesh.vertices.size() ||
+      is_needle_filled(info.surface_needles, info.input_facets))
+    return;
+  const double before = min_dihedral(mesh);
+  if (!(before < kFlatTetDeg)) return;
+  const auto start = std::chrono::steady_clock::now();
+  SliverSmoothingOptions smoothing;
+  smoothing.below_deg = kFlatTetDeg;
+  smoothing.kept_count_below_deg = kSmoothBelowDeg;  // no more tets under 15° for the flattest
+  for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
+    smoothing.region_volume_bound.push_back(options.volume_bound(r));
+  smoothing.reference = candidate.unsmoothed;
+  double slide = options.surface_slide, angle = before;
+  while (slide < options.flat_surface_slide && angle < kFlatTetDeg) {
+    slide = std::min(2.0 * slide, options.flat_surface_slide);
+    smoothing.surface_slide = slide;
+    if (smooth_sliver_points(mesh, smoothing).moved_surface > 0) angle = min_dihedral(mesh);
+  }
+  info.further_slide = slide;
+  // The points moved, counted against where they were before any smoothing.
+  std::vector<char> on_surface(mesh.vertices.size(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t) on_surface[v] = 1;
+  info.smoothed_points = 0;
+  info.slid_points = 0;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (mesh.vertices[v] != candidate.unsmoothed[v])
+      ++(on_surface[v] ? info.slid_points : info.smoothed_points);
+  const double took = seconds_since(start);
+  seconds += took;
+  log.debug("tetmesh: surface points of the tets under " + number(kFlatTetDeg) +
+            " deg slid up to " + number(slide) + " x the local edge: min dihedral " +
+            number(before) + " -> " + number(angle) + " deg, " + std::to_string(info.slid_points) +
+            " surface points slid in all, " + number(took) + " s");
 }
 
 /// A mesh and what made it: of the surfaces as given, or of a set of bisection rounds.
@@ -1227,6 +1274,9 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   if (!(options.surface_slide >= 0.0 && options.surface_slide <= kMaxSurfaceSlide))
     throw ParameterError("surface slide " + number(options.surface_slide) + " out of range [0, " +
                          number(kMaxSurfaceSlide) + "]");
+  if (!(options.flat_surface_slide >= 0.0 && options.flat_surface_slide <= kMaxSurfaceSlide))
+    throw ParameterError("flat surface slide " + number(options.flat_surface_slide) +
+                         " out of range [0, " + number(kMaxSurfaceSlide) + "]");
   if (!(options.extra_time >= 0.0 && std::isfinite(options.extra_time)))
     throw ParameterError("extra time " + number(options.extra_time) + " must be 0 or positive");
   if (!(options.attempts >= 1 && options.attempts <= 10))
@@ -1286,13 +1336,18 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     info.extra_time_spent = spent;
   }
   smooth(options, log, info, best, smoothing_seconds);
+  slide_further(options, log, info, best, smoothing_seconds);
   info.smoothing_seconds = smoothing_seconds;
   if (info.slid_points > 0) {
     if (auto slid = with_slid_points(info.refined_model ? *info.refined_model : model, best.mesh))
       info.refined_model = std::move(slid);
+    const std::string further = info.further_slide > 0.0
+                                    ? ", " + number(info.further_slide) +
+                                          " under tets flatter than " + number(kFlatTetDeg) + " deg"
+                                    : "";
     log.info("tetmesh: " + std::to_string(info.slid_points) +
              " surface points slid along their surfaces for the tets (the triangles within " +
-             number(options.surface_slide) +
+             number(options.surface_slide) + further +
              " x the local edge of where they were; --surface-slide 0 keeps them)");
   }
   info.tetgen_seconds = extra.total();  // every run's, kept or not

@@ -34,6 +34,13 @@ constexpr double kSurfaceSlide = 0.01;
 /// The largest surface_slide accepted: beyond a tenth of an edge the surfaces change shape.
 constexpr double kMaxSurfaceSlide = 0.1;
 
+/// Tets flatter than this (degrees) are opened from the surface side: the surface bisection
+/// (TetmeshOptions::refine_surface_below_deg by default) and the further slide
+/// (TetmeshOptions::flat_surface_slide) work under them.
+constexpr double kFlatTetDeg = 12.0;
+/// TetmeshOptions::flat_surface_slide by default: the largest slide, at those points only.
+constexpr double kFlatSurfaceSlide = kMaxSurfaceSlide;
+
 /// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
 constexpr int kMaxSizeRounds = 16;
 
@@ -103,7 +110,7 @@ struct TetmeshOptions {
   /// this bound, half of it, and the bound (kRoundSets); the best of their meshes and the one
   /// without bisection, each polished, is kept. The output triangles are then the finer ones
   /// (TetmeshRun::refined_model); 0 keeps the model's triangles exactly.
-  double refine_surface_below_deg = 12.0;
+  double refine_surface_below_deg = kFlatTetDeg;
   /// At most this many bisection rounds in each set (each one halves the edges it splits).
   int refine_surface_rounds = 4;
   /// A last TetGen run to this dihedral bound (`q<ratio>/<angle>`, degrees), with its own
@@ -121,6 +128,10 @@ struct TetmeshOptions {
   /// the surface points where they are. The output triangles are then the slid ones
   /// (TetmeshRun::refined_model).
   double surface_slide = kSurfaceSlide;
+  /// Then, where tets stay flatter than kFlatTetDeg, their surface points slide further:
+  /// the slide doubles from surface_slide up to this while such tets remain (at most
+  /// kMaxSurfaceSlide). Not above surface_slide: no further slide.
+  double flat_surface_slide = kFlatSurfaceSlide;
   /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
   /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
   /// many rounds. Under Y TetGen adds no point inside the diametral ball of a surface triangle,
@@ -209,6 +220,8 @@ struct TetmeshRun {
   bool polished = false;                  // the polish run's mesh was kept
   long smoothed_points = 0;               // interior points moved by the smoothing
   long slid_points = 0;                   // surface points it slid along their surfaces
+  /// The largest slide the further slide used (TetmeshOptions::flat_surface_slide); 0: none ran.
+  double further_slide = 0.0;
   /// VolumeQuality::tets_below_deg before the smoothing (after the polish).
   std::array<long, kDihedralCensusDeg.size()> smoothing_tets_below{};
   /// VolumeQuality::tets_below_deg of TetGen's first mesh, before passes, rounds and polish.

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
+#include "framework/core/error.h"
 #include "framework/geometry/closest_point.h"
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
@@ -42,10 +44,18 @@ double smallest_angle(const VolumeMesh& mesh) {
   return measure_volume(mesh).min_dihedral_deg;
 }
 
-// TetGen's mesh of a box with a layer thinner than its triangles, neither smoothed nor polished:
-// interior and surface points next to flat tets to move.
-VolumeMesh thin_layer_mesh() {
-  const StructuralModel model = build_model(test::thin_layer_box(6, 0.08));
+// A box with a layer thinner than its triangles, `bend` > 0 folding it into an arch along x
+// (z + bend sin πx: curved horizons, where the slide bound holds sliding points back).
+StructuralModel thin_layer_model(double thickness, double bend = 0.0) {
+  SurfaceSoup soup = test::thin_layer_box(6, thickness);
+  for (Vec3& p : soup.points) p.z() += bend * std::sin(M_PI * p.x());
+  return build_model(soup);
+}
+
+// TetGen's mesh of thin_layer_model(0.08, bend), neither smoothed nor polished: interior and
+// surface points next to flat tets to move.
+VolumeMesh thin_layer_mesh(double bend = 0.0) {
+  const StructuralModel model = thin_layer_model(0.08, bend);
   Logger log(LogLevel::Quiet);
   TetmeshOptions options;
   options.smooth_points = false;
@@ -165,6 +175,81 @@ TEST(SliverSmoothing, SlidesSurfacePointsOnTheirSurfacesAndLeavesCornersWhereThe
         min_angle_deg(slid.vertices[f[0]], slid.vertices[f[1]], slid.vertices[f[2]]);
     EXPECT_GE(after, std::min(before, 20.0) - 1e-9) << "triangle " << t;
   }
+}
+
+// The distance from each surface point of `moved` to the surfaces of `start` (its triangles
+// at start's positions), the largest.
+double farthest_from_surfaces(const VolumeMesh& start, const VolumeMesh& moved) {
+  double farthest = 0.0;
+  std::vector<char> on_surface(start.vertices.size(), 0);
+  for (const Triangle& f : start.triangles)
+    for (int v : f) on_surface[v] = 1;
+  for (size_t v = 0; v < start.vertices.size(); ++v) {
+    if (!on_surface[v]) continue;
+    double d2 = std::numeric_limits<double>::infinity();
+    for (const Triangle& f : start.triangles)
+      d2 = std::min(d2, squared_distance_to_triangle(moved.vertices[v], start.vertices[f[0]],
+                                                     start.vertices[f[1]], start.vertices[f[2]]));
+    farthest = std::max(farthest, std::sqrt(d2));
+  }
+  return farthest;
+}
+
+TEST(SliverSmoothing, ASecondSmoothingSlidesFromTheReferenceAndKeepsTheFlatTetsCounted) {
+  // Smoothed once with a small slide, then again from the vertices as they were with five
+  // times the slide, no point gaining a tet under 15 deg: the smallest angle and the
+  // count under 15 deg never get worse, and the slide is measured from the start, not added.
+  const VolumeMesh start = thin_layer_mesh(0.3);
+  VolumeMesh mesh = start;
+  SliverSmoothingOptions first;
+  first.surface_slide = 0.01;
+  smooth_sliver_points(mesh, first);
+  const VolumeQuality once = measure_volume(mesh);
+  SliverSmoothingOptions second;
+  second.surface_slide = 0.05;
+  second.kept_count_below_deg = 15.0;
+  second.reference = start.vertices;
+  const SliverSmoothingResult r = smooth_sliver_points(mesh, second);
+  EXPECT_GT(r.moved_surface, 0);
+  const VolumeQuality twice = measure_volume(mesh);
+  EXPECT_GE(twice.min_dihedral_deg, once.min_dihedral_deg);
+  EXPECT_LE(twice.tets_below_deg[kCensusBin15Deg], once.tets_below_deg[kCensusBin15Deg]);
+  EXPECT_EQ(twice.nonpositive_tets, 0);
+  EXPECT_EQ(triangles_not_in_tets(mesh).size(), 0u);
+  // Every surface point is on the triangles as they were at the start (a point inside a part
+  // is put back on them, a point on a contact slides along it); placed on the once-smoothed
+  // triangles instead, the arch's points would be off them.
+  EXPECT_LE(farthest_from_surfaces(start, mesh), 1e-12);
+
+  second.reference.pop_back();
+  EXPECT_THROW(smooth_sliver_points(mesh, second), std::invalid_argument);
+}
+
+TEST(SliverSmoothing, TetrahedralizeSlidesFurtherOnlyWhereTetsStayFlat) {
+  // A layer thin enough that tets under 12 deg stay after the smoothing (no surface bisection
+  // here): the further slide raises the smallest angle, never adds tets under 15 deg, and the
+  // written surfaces are the slid ones.
+  const StructuralModel model = thin_layer_model(0.03, 0.3);
+  Logger log(LogLevel::Quiet);
+  TetmeshOptions plain, further;
+  plain.flat_surface_slide = 0.0;
+  plain.refine_surface_below_deg = further.refine_surface_below_deg = 0.0;
+  plain.extra_time = further.extra_time = 0.0;
+  TetmeshRun plain_run, further_run;
+  const VolumeMesh a = tetrahedralize(model, plain, log, &plain_run);
+  const VolumeMesh b = tetrahedralize(model, further, log, &further_run);
+  const VolumeQuality qa = measure_volume(a), qb = measure_volume(b);
+  ASSERT_LT(qa.min_dihedral_deg, kFlatTetDeg);
+  EXPECT_GT(qb.min_dihedral_deg, qa.min_dihedral_deg);
+  EXPECT_LE(qb.tets_below_deg[kCensusBin15Deg], qa.tets_below_deg[kCensusBin15Deg]);
+  EXPECT_GT(further_run.slid_points, plain_run.slid_points);
+  ASSERT_TRUE(further_run.refined_model);
+  EXPECT_EQ(model_triangles_not_in_tets(*further_run.refined_model, b).size(), 0u);
+  EXPECT_EQ(qb.nonpositive_tets, 0);
+
+  TetmeshOptions bad;
+  bad.flat_surface_slide = 2 * kMaxSurfaceSlide;
+  EXPECT_THROW(tetrahedralize(model, bad, log), ParameterError);
 }
 
 TEST(SliverSmoothing, TetrahedralizeSmoothsByDefaultAndReportsTheCensusBefore) {
