@@ -149,6 +149,7 @@ struct Smoother {
   const std::vector<double>& bounds;
   double slide;
   double counted_cosine;  // with kept_count_below_deg its cosine, else 2: none counted
+  double deficit_cosine;  // with SliverSmoothingOptions::deficit, the cosine of below_deg; else 2
   const std::vector<int>& parts = triangle_parts(mesh);
 
   // The cosine of the smallest dihedral angle of tet q (the largest of its six), or 2 when q
@@ -207,6 +208,26 @@ struct Smoother {
       flat += worst_cosine(q) > counted_cosine;
     }
     return flat;
+  }
+
+  // How far v's tets with v at p fall under deficit_cosine in all (cosines over it, summed),
+  // and their largest worst_cosine; infinite when a tet is not positive or over its bound.
+  std::pair<double, double> star_deficit(int v, const Vec3& p) const {
+    double deficit = 0.0, worst = -1.0;
+    for (long i = tets_at.begin(v); i < tets_at.end(v); ++i) {
+      const long t = tets_at.items[i];
+      std::array<Vec3, 4> q;
+      for (int k = 0; k < 4; ++k) q[k] = at(mesh.tets[t][k], v, p);
+      const int region = mesh.tet_region[t];
+      if (region < static_cast<int>(bounds.size()) && bounds[region] > 0.0 &&
+          tet_volume(q[0], q[1], q[2], q[3]) > bounds[region])
+        return {std::numeric_limits<double>::infinity(), 2.0};
+      const double c = worst_cosine(q);
+      if (!(c < 1.0)) return {std::numeric_limits<double>::infinity(), 2.0};
+      deficit += std::max(0.0, c - deficit_cosine);
+      worst = std::max(worst, c);
+    }
+    return {deficit, worst};
   }
 
   // The largest radius-edge ratio of v's tets with v at p.
@@ -298,15 +319,28 @@ struct Smoother {
     // A candidate is kept when its star is better, keeps its radius-edge ratios and, on a
     // surface, the surface allows it.
     const double ratio = std::max(kKeptRadiusEdge, star_radius_edge(v, start));
-    const bool counted = counted_cosine <= 1.0;
+    const bool counted = counted_cosine <= 1.0, by_deficit = deficit_cosine <= 1.0;
     const int flat = counted ? star_flat(v, start) : 0;
+    const double start_worst = best;
+    double least_deficit = by_deficit ? star_deficit(v, start).first : 0.0;
     const auto better = [&](const Vec3& q, double& value, long& where) {
-      const auto [c, at_tet] = star_worst(v, q, best, worst_tet);
-      if (!(c < best) || star_radius_edge(v, q) > ratio) return false;
+      double deficit = 0.0;
+      if (by_deficit) {
+        const auto [d, c] = star_deficit(v, q);
+        if (!(d < least_deficit) || c > start_worst) return false;
+        deficit = d;
+        value = best;  // the flattest no flatter than at the start; the deficit is what rose
+        where = worst_tet;
+      } else {
+        const auto [c, at_tet] = star_worst(v, q, best, worst_tet);
+        if (!(c < best)) return false;
+        value = c;
+        where = at_tet;
+      }
+      if (star_radius_edge(v, q) > ratio) return false;
       if (motion != Motion::Free && !surface_allows(v, q, tolerance)) return false;
       if (counted && star_flat(v, q) > flat) return false;
-      value = c;
-      where = at_tet;
+      if (by_deficit) least_deficit = deficit;
       return true;
     };
     Vec3 p = start;
@@ -391,7 +425,8 @@ SliverSmoothingResult smooth_sliver_points(VolumeMesh& mesh,
                     options.surface_slide,
                     options.kept_count_below_deg > 0.0
                         ? std::cos(options.kept_count_below_deg * M_PI / 180.0)
-                        : 2.0};
+                        : 2.0,
+                    options.deficit ? std::cos(options.below_deg * M_PI / 180.0) : 2.0};
   const std::array<Vec3, 26> dirs = compass();
   const bool slide = options.surface_slide > 0.0;
   std::vector<char> flat(nt), candidate(nv), moved_once(nv, 0);

@@ -29,6 +29,10 @@ struct SliverSmoothingOptions {
   /// How far the surfaces may move, relative to the mean edge at a sliding point; 0 keeps the
   /// surface points where they are.
   double surface_slide = 0.0;
+  /// What a move raises: the smallest dihedral angle of the point's tets (false), or (true) how
+  /// far they fall under below_deg in all, the smallest angle of them never dropping: the tets
+  /// under the bound rise even where the flattest of them cannot.
+  bool deficit = false;
   /// When > 0, a move may not add to the tets of the point flatter than this (degrees): the
   /// flattest rise without others falling under it.
   double kept_count_below_deg = 0.0;

@@ -183,10 +183,14 @@ class TetmeshModule : public Module {
     slide.max = kMaxSurfaceSlide;
     ParameterSpec flat_slide{
         "flat-slide", ParameterType::Double, TetmeshOptions{}.flat_surface_slide,
-        "then, where tets stay flatter than " + std::to_string(static_cast<int>(kFlatTetDeg)) +
-            " deg, their surface points slide further: --surface-slide doubled up to this while "
-            "such tets remain (the surfaces move more only there); not above --surface-slide: "
-            "no further slide"};
+        "then the surface points of the tets left flat slide further, up to this: doubled from "
+        "--surface-slide while tets under " +
+            std::to_string(static_cast<int>(kSurfaceSideDeg)) +
+            " deg remain, then to raise the tets under " +
+            std::to_string(static_cast<int>(kSmoothBelowDeg)) +
+            " deg (the surfaces move more only there; no point gains a tet under " +
+            std::to_string(static_cast<int>(kSmoothBelowDeg)) +
+            " deg); not above --surface-slide: no further slide"};
     flat_slide.min = 0.0;
     flat_slide.max = kMaxSurfaceSlide;
     ParameterSpec size{

@@ -1039,34 +1039,46 @@ void smooth(const TetmeshOptions& options, Logger& log, TetmeshRun& info, Conver
             number(before) + " -> " + number(min_dihedral(mesh)) + " deg, " + number(took) + " s");
 }
 
-/// The smoothing once more where tets stay flatter than kFlatTetDeg after it, their
-/// surface points allowed further (TetmeshOptions::flat_surface_slide): the slide doubles from
-/// surface_slide while such tets remain, measured from the surfaces before any smoothing. The
-/// surfaces move more only where the tets need it, and no tet ends flatter than before.
-void slide_further(const TetmeshOptions& options, Logger& log, TetmeshRun& info,
-                   ConvertedMesh& candidate, double& seconds) {
+/// The smoothing once more, on the mesh kept (`candidate`, smoothed), from its vertices before
+/// the smoothing (SliverSmoothingOptions::reference: the slides do not add up), no point gaining
+/// a tet under kSmoothBelowDeg:
+/// - where tets stay flatter than kSurfaceSideDeg, their surface points are allowed further
+///   (TetmeshOptions::flat_surface_slide): the slide doubles from surface_slide while such tets
+///   remain, so the surfaces move more only where the tets need it;
+/// - then the points of the tets under kSmoothBelowDeg lessen how far those fall under it in all
+///   (SliverSmoothingOptions::deficit), each point's flattest tet never flatter: the tets under
+///   15° rise where the flattest of them cannot.
+/// No tet ends flatter than the flattest was, and no more are under 15°.
+void smooth_further(const TetmeshOptions& options, Logger& log, TetmeshRun& info,
+                    ConvertedMesh& candidate, double& seconds) {
   VolumeMesh& mesh = candidate.mesh;
-  if (!options.smooth_points || !(options.surface_slide > 0.0) ||
-      !(options.flat_surface_slide > options.surface_slide) ||
-      candidate.unsmoothed.size() != mesh.vertices.size() ||
-      is_needle_filled(info.surface_needles, info.input_facets))
-    return;
-  const double before = min_dihedral(mesh);
-  if (!(before < kFlatTetDeg)) return;
+  if (!options.smooth_points || candidate.unsmoothed.size() != mesh.vertices.size()) return;
   const auto start = std::chrono::steady_clock::now();
+  const bool needle_filled = is_needle_filled(info.surface_needles, info.input_facets);
   SliverSmoothingOptions smoothing;
-  smoothing.below_deg = kFlatTetDeg;
-  smoothing.kept_count_below_deg = kSmoothBelowDeg;  // no more tets under 15° for the flattest
+  smoothing.kept_count_below_deg = kSmoothBelowDeg;
   for (int r = 0; r < static_cast<int>(mesh.region_names.size()); ++r)
     smoothing.region_volume_bound.push_back(options.volume_bound(r));
   smoothing.reference = candidate.unsmoothed;
+  const double before = min_dihedral(mesh);
+  const long under_before = dihedral_census(mesh)[kCensusBin15Deg];
   double slide = options.surface_slide, angle = before;
-  while (slide < options.flat_surface_slide && angle < kFlatTetDeg) {
-    slide = std::min(2.0 * slide, options.flat_surface_slide);
-    smoothing.surface_slide = slide;
-    if (smooth_sliver_points(mesh, smoothing).moved_surface > 0) angle = min_dihedral(mesh);
+  if (!needle_filled && options.surface_slide > 0.0) {
+    smoothing.below_deg = kSurfaceSideDeg;
+    while (slide < options.flat_surface_slide && angle < kSurfaceSideDeg) {
+      slide = std::min(2.0 * slide, options.flat_surface_slide);
+      smoothing.surface_slide = slide;
+      if (smooth_sliver_points(mesh, smoothing).moved_surface > 0) angle = min_dihedral(mesh);
+    }
+    if (slide > options.surface_slide) info.further_slide = slide;
   }
-  info.further_slide = slide;
+  if (under_before > 0) {
+    smoothing.below_deg = kSmoothBelowDeg;
+    smoothing.deficit = true;
+    smoothing.surface_slide =
+        needle_filled ? 0.0 : std::max(options.surface_slide, options.flat_surface_slide);
+    smooth_sliver_points(mesh, smoothing);
+  }
   // The points moved, counted against where they were before any smoothing.
   std::vector<char> on_surface(mesh.vertices.size(), 0);
   for (const Triangle& t : mesh.triangles)
@@ -1078,10 +1090,11 @@ void slide_further(const TetmeshOptions& options, Logger& log, TetmeshRun& info,
       ++(on_surface[v] ? info.slid_points : info.smoothed_points);
   const double took = seconds_since(start);
   seconds += took;
-  log.debug("tetmesh: surface points of the tets under " + number(kFlatTetDeg) +
-            " deg slid up to " + number(slide) + " x the local edge: min dihedral " +
-            number(before) + " -> " + number(angle) + " deg, " + std::to_string(info.slid_points) +
-            " surface points slid in all, " + number(took) + " s");
+  log.debug("tetmesh: further smoothing (slide up to " + number(slide) +
+            " x the local edge under " + number(kSurfaceSideDeg) + " deg): min dihedral " +
+            number(before) + " -> " + number(min_dihedral(mesh)) + " deg, tets under " +
+            number(kSmoothBelowDeg) + " deg " + std::to_string(under_before) + " -> " +
+            std::to_string(dihedral_census(mesh)[kCensusBin15Deg]) + ", " + number(took) + " s");
 }
 
 /// A mesh and what made it: of the surfaces as given, or of a set of bisection rounds.
@@ -1336,15 +1349,15 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
     info.extra_time_spent = spent;
   }
   smooth(options, log, info, best, smoothing_seconds);
-  slide_further(options, log, info, best, smoothing_seconds);
+  smooth_further(options, log, info, best, smoothing_seconds);
   info.smoothing_seconds = smoothing_seconds;
   if (info.slid_points > 0) {
     if (auto slid = with_slid_points(info.refined_model ? *info.refined_model : model, best.mesh))
       info.refined_model = std::move(slid);
-    const std::string further = info.further_slide > 0.0
-                                    ? ", " + number(info.further_slide) +
-                                          " under tets flatter than " + number(kFlatTetDeg) + " deg"
-                                    : "";
+    const std::string further = info.further_slide > 0.0 ? ", " + number(info.further_slide) +
+                                                               " under tets flatter than " +
+                                                               number(kSurfaceSideDeg) + " deg"
+                                                         : "";
     log.info("tetmesh: " + std::to_string(info.slid_points) +
              " surface points slid along their surfaces for the tets (the triangles within " +
              number(options.surface_slide) + further +

@@ -37,8 +37,9 @@ constexpr double kMaxSurfaceSlide = 0.1;
 /// Tets flatter than this (degrees) are opened from the surface side: the surface bisection
 /// (TetmeshOptions::refine_surface_below_deg by default) and the further slide
 /// (TetmeshOptions::flat_surface_slide) work under them.
-constexpr double kFlatTetDeg = 12.0;
-/// TetmeshOptions::flat_surface_slide by default: the largest slide, at those points only.
+constexpr double kSurfaceSideDeg = 12.0;
+/// TetmeshOptions::flat_surface_slide by default: the largest slide, at the points of flat tets
+/// only.
 constexpr double kFlatSurfaceSlide = kMaxSurfaceSlide;
 
 /// The most size rounds (TetmeshOptions::size_rounds) accepted: each may double the triangles.
@@ -110,7 +111,7 @@ struct TetmeshOptions {
   /// this bound, half of it, and the bound (kRoundSets); the best of their meshes and the one
   /// without bisection, each polished, is kept. The output triangles are then the finer ones
   /// (TetmeshRun::refined_model); 0 keeps the model's triangles exactly.
-  double refine_surface_below_deg = kFlatTetDeg;
+  double refine_surface_below_deg = kSurfaceSideDeg;
   /// At most this many bisection rounds in each set (each one halves the edges it splits).
   int refine_surface_rounds = 4;
   /// A last TetGen run to this dihedral bound (`q<ratio>/<angle>`, degrees), with its own
@@ -128,9 +129,11 @@ struct TetmeshOptions {
   /// the surface points where they are. The output triangles are then the slid ones
   /// (TetmeshRun::refined_model).
   double surface_slide = kSurfaceSlide;
-  /// Then, where tets stay flatter than kFlatTetDeg, their surface points slide further:
-  /// the slide doubles from surface_slide up to this while such tets remain (at most
-  /// kMaxSurfaceSlide). Not above surface_slide: no further slide.
+  /// Then the points of the tets left flat move again, their surface points allowed further,
+  /// up to this (at most kMaxSurfaceSlide): where tets stay flatter than kSurfaceSideDeg, the slide
+  /// doubles from surface_slide while such tets remain; then the points of the tets under
+  /// kSmoothBelowDeg lessen how far those fall under it in all (see smooth_further() in the
+  /// source). Not above surface_slide: no further slide.
   double flat_surface_slide = kFlatSurfaceSlide;
   /// Surface bisection for max_volume (kept surface only): while some tet is larger than the
   /// bound, the surface edges under those tets are bisected and TetGen runs again, at most this
