@@ -50,8 +50,9 @@ class CheckModule : public Module {
     angle.min = 0;
     angle.max = 60;
     ParameterSpec wedge{"min-wedge", ParameterType::Double, defaults.thin_wedge_warning_deg,
-                        "surfaces meeting at less than this (degrees) inside a region are warnings: "
-                        "the smallest dihedral angle a tet mesh keeping them can have"};
+                        "surfaces meeting at less than this (degrees) inside a region, and free "
+                        "borders leaving a surface at less than this past the corner where they "
+                        "meet, are warnings: where tet meshes keeping them get flat tets"};
     wedge.min = 0;
     wedge.max = 90;
     ParameterSpec intersections{"intersections", ParameterType::Bool, true,

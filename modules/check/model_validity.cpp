@@ -17,6 +17,7 @@
 #include "framework/core/union_find.h"
 #include "framework/geometry/self_intersections.h"
 #include "framework/geometry/triangle_quality.h"
+#include "framework/model/border_gaps.h"
 #include "framework/model/contact_wedges.h"
 
 namespace voroseal {
@@ -131,6 +132,7 @@ class ValidityChecker {
       check_self_intersections();
       check_small_angles();
       check_thin_wedges();
+      check_thin_border_gaps();
       check_split_vertices();
       check_disconnected_surfaces();
       check_input_repairs();
@@ -885,6 +887,33 @@ class ValidityChecker {
                               number(wedges.front().angle_deg) +
                               " deg): a tet mesh keeping these surfaces has a dihedral angle this small there"
                         : "no surfaces meeting at less than " + number(o_.thin_wedge_warning_deg) + " deg";
+  }
+
+  // ---- thin_border_gaps (warning): a free border leaving another surface at a few degrees
+  // past the corner where they meet (border_gaps.h).
+  void check_thin_border_gaps() {
+    CheckEntry& c = add("thin_border_gaps", Severity::Warning);
+    const std::vector<BorderGap> gaps = thin_border_gaps(m_, o_.thin_wedge_warning_deg);
+    c.count = static_cast<long>(gaps.size());
+    for (const BorderGap& g : gaps) {
+      if (!room(c)) break;
+      c.examples.push_back({"border of " + part_name(g.border_part) + " from corner vertex " +
+                                std::to_string(g.apex) + ": " + number(g.angle_deg) + " deg off " +
+                                part_name(g.surface_part) + " at vertex " +
+                                std::to_string(g.vertex),
+                            file(m_.vertices[g.vertex]),
+                            {part_name(g.border_part), part_name(g.surface_part)}});
+    }
+    c.details = {{"angle_threshold_deg", o_.thin_wedge_warning_deg}};
+    if (!gaps.empty()) c.details["min_gap_deg"] = gaps.front().angle_deg;
+    c.message =
+        c.count ? plural(c.count, "free border") + " leaving a surface at less than " +
+                      number(o_.thin_wedge_warning_deg) + " deg past the corner where they meet " +
+                      "(narrowest " + number(gaps.front().angle_deg) +
+                      " deg): tets across such a gap are flat unless its surfaces are meshed "
+                      "finer than it is thick"
+                : "no free border leaving a surface at less than " +
+                      number(o_.thin_wedge_warning_deg) + " deg";
   }
 
   // ---- split_vertices (warning): a surface touching itself at a vertex.

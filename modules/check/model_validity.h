@@ -38,6 +38,11 @@
 //  W thin_wedges                contact edges where two surfaces meet at less than
 //                               thin_wedge_warning_deg inside a region (pinch-outs): any tet
 //                               mesh keeping the surfaces has a dihedral angle that small there
+//  W thin_border_gaps           free borders leaving a surface at less than
+//                               thin_wedge_warning_deg past the corner where they meet (a fault
+//                               tip running on just off another surface): tets across the gap
+//                               are flat unless the surfaces are meshed finer there
+//                               (border_gaps.h)
 //  W split_vertices             vertices where a surface touches itself, split in its mesh
 //  W disconnected_surfaces      surface parts in several pieces
 //  W input_repairs              triangles the builder dropped (degenerate, duplicated) or flipped

@@ -12,6 +12,7 @@
 #include "framework/host/module.h"
 #include "framework/host/parameter_limits.h"
 #include "framework/host/registry.h"
+#include "framework/model/border_gaps.h"
 #include "framework/model/contact_wedges.h"
 #include "framework/model/size_rules.h"
 #include "io/model_io.h"
@@ -409,15 +410,40 @@ class TetmeshModule : public Module {
         return s >= 0 && s < static_cast<int>(mesh->part_names.size()) ? mesh->part_names[s]
                                                                        : std::to_string(s);
       };
-      const std::string where = file_point(tet_centre(run.slivers.flattest_layer_tet), mesh->frame.origin);
-      context.log.warning(
-          "tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
-          " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) +
-          " and " + name(run.slivers.layer_surfaces[1]) + " at " + where +
-          ", thinner there than its triangles are wide" +
-          (run.surface_rounds > 0 ? " even after the surface bisection" : std::string()) +
-          ": remesh with `--thin-layers --zip-pinch-outs` (finer cells on thin layers, pinch-outs "
-          "thinner than d_min closed) or a smaller --edge-length");
+      const Vec3 centre = tet_centre(run.slivers.flattest_layer_tet);
+      const std::string where = file_point(centre, mesh->frame.origin);
+      // A free border running on just off a surface past their corner: the gap between them,
+      // not a layer, is what the surface triangles are too wide for.
+      const std::vector<BorderGap> gaps = thin_border_gaps(model, options.min_dihedral_deg);
+      // The tet is in a gap when it is as near the gap's border as the border's edges are long.
+      const auto near = std::find_if(gaps.begin(), gaps.end(), [&](const BorderGap& g) {
+        double nearest = (centre - model.vertices[g.apex]).norm(), edge = 0.0;
+        for (size_t i = 0; i < g.border.size(); ++i) {
+          const Vec3& v = model.vertices[g.border[i]];
+          nearest = std::min(nearest, (centre - v).norm());
+          edge = std::max(edge, (v - model.vertices[i > 0 ? g.border[i - 1] : g.apex]).norm());
+        }
+        return nearest <= edge;
+      });
+      if (near != gaps.end())
+        context.log.warning(
+            "tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
+            " deg) lie at " + where + ", in the gap between the free border of " +
+            model.parts[near->border_part].name + " and " + model.parts[near->surface_part].name +
+            ", which it leaves at " + std::to_string(near->angle_deg) + " deg from " +
+            file_point(model.vertices[near->apex], model.frame.origin) +
+            " (`voroseal check` lists thin border gaps): surfaces meshed finer there (a smaller "
+            "--edge-length, or --size on the two), or the border extended onto the surface or "
+            "cut back, open it");
+      else
+        context.log.warning(
+            "tetmesh: the flattest tets (" + std::to_string(run.slivers.layer.min_dihedral_deg) +
+            " deg) lie across the layer between surfaces " + name(run.slivers.layer_surfaces[0]) +
+            " and " + name(run.slivers.layer_surfaces[1]) + " at " + where +
+            ", thinner there than its triangles are wide" +
+            (run.surface_rounds > 0 ? " even after the surface bisection" : std::string()) +
+            ": remesh with `--thin-layers --zip-pinch-outs` (finer cells on thin layers, "
+            "pinch-outs thinner than d_min closed) or a smaller --edge-length");
     }
     if (parameters.has("output")) {
       const std::string path = parameters.get_string("output");

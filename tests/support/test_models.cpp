@@ -112,6 +112,26 @@ SurfaceSoup floating_fault(int n, double x0, double lo, double hi) {
   return soup;
 }
 
+SurfaceSoup fault_leaving_horizon_box(double angle_deg) {
+  SurfaceSoup soup = lattice_box(8, true);
+  SurfaceSoup fault;
+  fault.groups.push_back({"fault", "fault", SurfaceKind::Fault, ""});
+  const double rise = std::tan(angle_deg * M_PI / 180.0);
+  for (int j = 0; j <= 4; ++j) {
+    const double x = 0.25 + 0.125 * j;
+    fault.points.emplace_back(x, 0.5, 0.5 + std::max(0.0, x - 0.5) * rise);
+    fault.points.emplace_back(x, 0.5, 0.75);
+  }
+  for (int j = 0; j < 4; ++j) {
+    const int a = 2 * j, b = 2 * j + 2;  // lower points; the upper ones follow them
+    fault.triangles.push_back({a, b, b + 1});
+    fault.triangles.push_back({a, b + 1, a + 1});
+    fault.triangle_group.insert(fault.triangle_group.end(), 2, 0);
+  }
+  append(soup, fault);
+  return soup;
+}
+
 SurfaceSoup pinch_out_prism(double angle_deg) {
   SurfaceSoup soup;
   soup.source = "pinch_out_prism";

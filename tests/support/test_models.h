@@ -38,6 +38,12 @@ SurfaceSoup thin_layer_box(int n, double thickness);
 /// "upper" over it. Three regions.
 SurfaceSoup pinch_out_tongue_box(int n, double thickness, double tip = 0.25, double opens = 0.75);
 
+/// lattice_box(8, true) (horizon at z = 0.5) and a fault in the plane y = 0.5 above the
+/// horizon, x in [0.25, 0.75], up to z = 0.75: its lower border lies on the horizon up to
+/// x = 0.5, then leaves it at `angle_deg` (a gap opening at that angle from the corner
+/// (0.5, 0.5, 0.5)).
+SurfaceSoup fault_leaving_horizon_box(double angle_deg);
+
 /// Appends b to a (points, triangles, groups).
 void append(SurfaceSoup& a, const SurfaceSoup& b);
 

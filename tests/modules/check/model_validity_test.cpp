@@ -43,7 +43,7 @@ TEST(CheckModel, SealedBoxesAreValid) {
     EXPECT_EQ(entry(r, "finite_extension").details["boundary_components"], 1);
     EXPECT_EQ(entry(r, "region_orientation").details["volumes_add_up"], true);
     // All the checks of the header ran.
-    EXPECT_EQ(r.checks.size(), 21u);
+    EXPECT_EQ(r.checks.size(), 22u);
   }
 }
 
@@ -174,6 +174,26 @@ TEST(CheckModel, ThinWedgesAreWarningsWithTheirAngle) {
   CheckOptions negative;
   negative.thin_wedge_warning_deg = -1.0;
   EXPECT_THROW(check_model(build_model(test::pinch_out_prism(3.0)), negative), ParameterError);
+}
+
+TEST(CheckModel, ThinBorderGapsAreWarningsWithTheirAngle) {
+  const ValidityReport r = check_model(build_model(test::fault_leaving_horizon_box(3.0)));
+  const CheckEntry& gaps = entry(r, "thin_border_gaps");
+  EXPECT_EQ(gaps.severity, Severity::Warning);
+  EXPECT_EQ(gaps.count, 1);
+  EXPECT_NEAR(gaps.details["min_gap_deg"].get<double>(), 3.0, 1e-9);
+  ASSERT_EQ(gaps.examples.size(), 1u);
+  EXPECT_GT(gaps.examples[0].location[0], 0.5);  // on the border past the corner
+  EXPECT_TRUE(r.valid());
+  // The same threshold as the wedges: under the gap, or a steep border, it passes.
+  CheckOptions lower;
+  lower.thin_wedge_warning_deg = 2.0;
+  EXPECT_TRUE(entry(check_model(build_model(test::fault_leaving_horizon_box(3.0)), lower),
+                    "thin_border_gaps")
+                  .passed());
+  EXPECT_TRUE(
+      entry(check_model(build_model(test::fault_leaving_horizon_box(30.0))), "thin_border_gaps")
+          .passed());
 }
 
 TEST(CheckModel, FlippedRegionSignsAreOrientationErrors) {

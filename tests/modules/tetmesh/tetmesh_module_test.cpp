@@ -172,6 +172,30 @@ TEST(TetmeshModule, WarnsAboutNearlyFlatTets) {
   std::fclose(log);
 }
 
+TEST(TetmeshModule, NamesTheBorderGapItsFlattestTetsLieIn) {
+  // A fault border leaving the horizon at 2 degrees, meshed without bisection or smoothing
+  // (which open the gap here): the flattest tets lie in the gap, and the warning names it
+  // rather than a layer. A steep border gives no such line.
+  for (const double angle : {2.0, 40.0}) {
+    std::FILE* log = std::tmpfile();
+    ASSERT_NE(log, nullptr);
+    test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh", LogLevel::Warning, log);
+    const Module& module = harness.module;
+    Context& context = harness.context;
+    context.model =
+        std::make_shared<StructuralModel>(build_model(test::fault_leaving_horizon_box(angle)));
+    module.run(context, Parameters(module.parameters(),
+                                   {{"refine-surface-below", "0"}, {"smooth", "false"}}));
+    std::rewind(log);
+    std::string text(8192, '\0');
+    text.resize(std::fread(text.data(), 1, text.size(), log));
+    std::fclose(log);
+    const bool named =
+        text.find("in the gap between the free border of fault") != std::string::npos;
+    EXPECT_EQ(named, angle < 10.0) << text;
+  }
+}
+
 TEST(TetmeshModule, WritesTheOutputAndRefusesToOverwriteTheInput) {
   test::ModuleHarness harness(voroseal_register_tetmesh, "tetmesh");
   const Module& module = harness.module;
