@@ -8,26 +8,44 @@
 
 namespace voroseal {
 
+namespace {
+
+// The triangles of one part, as model vertex ids.
+std::vector<Triangle> part_triangles(const SurfacePart& part) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(part.mesh.n_faces());
+  for (const auto& f : part.mesh.faces()) {
+    const auto h = f.halfedge();
+    triangles.push_back({part.model_vertex[h.from().idx()], part.model_vertex[h.to().idx()],
+                         part.model_vertex[h.next().to().idx()]});
+  }
+  return triangles;
+}
+
+}  // namespace
+
 std::vector<BorderGap> thin_border_gaps(const StructuralModel& model, double max_deg) {
   std::vector<BorderGap> gaps;
   const double max_sine = std::sin(std::min(max_deg, 90.0) * M_PI / 180.0);
-  const ModelTriangles flat = flatten(model);
-  // The parts at each vertex (sorted), and each part's triangles for its distance tree, which
-  // is built only for the parts a border leaves.
+  // Only the free borders' vertices need their parts (sorted), and only the parts a border
+  // leaves their distance trees: on large models both are a small share.
+  const auto walked = [](const Contact& c) {
+    return c.is_free_border() && c.parts.size() == 1 && !c.is_closed();
+  };
+  std::vector<char> on_border(model.vertices.size(), 0);
+  for (const Contact& c : model.contacts)
+    if (walked(c))
+      for (int v : c.vertices) on_border[v] = 1;
   std::vector<std::vector<int>> parts_at(model.vertices.size());
-  std::vector<std::vector<Triangle>> part_triangles(model.parts.size());
-  for (size_t t = 0; t < flat.triangles.size(); ++t) {
-    const int p = flat.part[t];
-    part_triangles[p].push_back(flat.triangles[t]);
-    for (int v : flat.triangles[t]) {
+  for (size_t p = 0; p < model.parts.size(); ++p)
+    for (int v : model.parts[p].model_vertex) {
+      if (!on_border[v]) continue;
       std::vector<int>& list = parts_at[v];
-      const auto at = std::lower_bound(list.begin(), list.end(), p);
-      if (at == list.end() || *at != p) list.insert(at, p);
+      if (list.empty() || list.back() != static_cast<int>(p)) list.push_back(static_cast<int>(p));
     }
-  }
   std::vector<std::unique_ptr<TriangleSetDistance>> trees(model.parts.size());
   for (const Contact& c : model.contacts) {
-    if (!c.is_free_border() || c.parts.size() != 1 || c.is_closed()) continue;
+    if (!walked(c)) continue;
     const int border = c.parts[0];
     const int n = static_cast<int>(c.vertices.size());
     for (const bool forward : {true, false}) {
@@ -36,7 +54,8 @@ std::vector<BorderGap> thin_border_gaps(const StructuralModel& model, double max
       for (const int s : parts_at[apex]) {
         if (s == border) continue;
         if (!trees[s])
-          trees[s] = std::make_unique<TriangleSetDistance>(model.vertices, part_triangles[s]);
+          trees[s] =
+              std::make_unique<TriangleSetDistance>(model.vertices, part_triangles(model.parts[s]));
         // Along the border while it stays within the angle off s: the narrowest point.
         BorderGap gap{apex, -1, border, s, 0.0, {}};
         double least = 2.0;

@@ -25,7 +25,9 @@ TEST(SortedKeyMap, AgreesWithEmplaceOnRandomKeys) {
     const int* value = map.find(key);
     const auto it = reference.find(key);
     ASSERT_EQ(value != nullptr, it != reference.end()) << key;
-    if (value) EXPECT_EQ(*value, it->second) << key;
+    if (value) {
+      EXPECT_EQ(*value, it->second) << key;
+    }
   }
 }
 

@@ -102,9 +102,10 @@ void expect_same_tags(const VolumeMesh& read, const VolumeMesh& written, bool pa
             keyed(written, written.edges, written.edge_contact));
   ASSERT_EQ(read.corners.size(), written.corners.size());
   EXPECT_EQ(keyed_corners(read), keyed_corners(written));
-  if (parts)
+  if (parts) {
     EXPECT_EQ(keyed(read, read.triangles, read.triangle_part),
               keyed(written, written.triangles, written.triangle_part));
+  }
 }
 
 class VolumeTags : public ::testing::TestWithParam<std::string> {};
@@ -120,9 +121,12 @@ TEST_P(VolumeTags, RoundTripNamesKindsPiecesContactsAndCorners) {
   const VolumeMesh read = read_volume_mesh(path);
   // Medit holds no pieces; .msh their ids (entities), .vtu ids and names.
   expect_same_tags(read, m, ext != ".mesh");
-  if (ext == ".vtu") EXPECT_EQ(read.part_names, m.part_names);
-  if (ext == ".mesh")
+  if (ext == ".vtu") {
+    EXPECT_EQ(read.part_names, m.part_names);
+  }
+  if (ext == ".mesh") {
     EXPECT_EQ(dir.listing(), (std::vector<std::string>{"cube.mesh", "cube.mesh.json"}));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(VolumeFormats, VolumeTags, ::testing::Values(".mesh", ".vtu", ".msh"),
