@@ -166,7 +166,8 @@ class TetmeshModule : public Module {
     ParameterSpec polish{
         "polish-dihedral", ParameterType::Double, TetmeshOptions{}.polish_dihedral_deg,
         "a last TetGen run refining to this dihedral bound (degrees) on the surfaces and points "
-        "kept, kept when its smallest dihedral angle is no lower (0: none)"};
+        "kept, kept when its smallest dihedral angle is higher, or the same with no more tets "
+        "under 15 deg (0: none)"};
     polish.min = 0.0;
     polish.max = 60.0;
     ParameterSpec smooth{

@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "framework/core/edge_key.h"
 #include "framework/core/error.h"
 #include "framework/geometry/triangle_quality.h"
 #include "framework/geometry/volume_quality.h"
@@ -32,6 +33,8 @@ namespace {
 
 // Relative rounding slack on --max-volume when the mesh is checked against it.
 constexpr double kVolumeBoundSlack = 1e-9;
+// Smallest dihedral angles closer than this (degrees) are the same when meshes are compared.
+constexpr double kSameAngleDeg = 1e-6;
 // TetGen's point sizes (switch m) bound the circumradius of the tets at a point; a regular tet
 // of edge H has circumradius H √6 / 4.
 const double kCircumradiusPerEdge = std::sqrt(6.0) / 4.0;
@@ -439,6 +442,13 @@ std::unordered_set<Key, KeyHash> surface_face_set(const VolumeMesh& mesh) {
   return faces;
 }
 
+/// Two smallest dihedral angles that are the same: a wedge of the surfaces holds both meshes'
+/// minimum (its tets' angle is the surfaces' own, up to rounding after slides along it), so
+/// the tets under 15° decide between them.
+bool same_angle(double a, double b) {
+  return std::abs(a - b) <= kSameAngleDeg;
+}
+
 /// Interior points against the tets below `bound_deg` that TetGen left because, under Y, it
 /// inserts no point that encroaches upon a kept surface triangle (inside its diametral ball):
 ///  - a tet with a face on a well-shaped surface triangle (smallest angle >= 20°) spans a
@@ -579,6 +589,63 @@ bool TetmeshOptions::has_region_bounds() const {
 double optimisation_threshold(const TetmeshOptions& options) {
   return options.radius_edge_ratio > 0.0 && !options.bounded() ? options.sliver_max_dihedral_deg
                                                                : 0.0;
+}
+
+double openable_min_dihedral(const VolumeMesh& mesh) {
+  // The third vertices of the surface triangles around each surface edge.
+  std::unordered_map<std::uint64_t, std::vector<int>> around;
+  around.reserve(3 * mesh.triangles.size());
+  for (const Triangle& f : mesh.triangles)
+    for (int k = 0; k < 3; ++k) around[edge_key(f[k], f[(k + 1) % 3])].push_back(f[(k + 2) % 3]);
+  // True when the surface triangles at edge (u, v) bound the tet's sector there, between its
+  // vertices c and d, on both sides: the tet fills the sector alone.
+  const auto pinned = [&](int u, int v, int c, int d) {
+    const auto it = around.find(edge_key(u, v));
+    if (it == around.end() || it->second.size() < 2) return false;
+    const Vec3& o = mesh.vertices[u];
+    const Vec3 axis = (mesh.vertices[v] - o).normalized();
+    const auto off_axis = [&](int w) {
+      const Vec3 p = mesh.vertices[w] - o;
+      return Vec3(p - p.dot(axis) * axis);
+    };
+    const Vec3 x = off_axis(c).normalized(), y = axis.cross(x);
+    const auto turn = [&](int w) {  // the angle of w about the axis from c, in [0, 2π)
+      const Vec3 p = off_axis(w);
+      const double a = std::atan2(p.dot(y), p.dot(x));
+      return a < 0.0 ? a + 2.0 * M_PI : a;
+    };
+    // The tet spans [0, θd] from c, or [θd, 2π) when d turned the other way.
+    const double to_d = turn(d);
+    const double low = to_d <= M_PI ? 0.0 : to_d, high = to_d <= M_PI ? to_d : 2.0 * M_PI;
+    const double tolerance = kSameAngleDeg * M_PI / 180.0;
+    const auto wrapped = [&](double gap) {  // in [0, 2π), a hair under 2π being 0
+      gap = std::fmod(gap + 4.0 * M_PI, 2.0 * M_PI);
+      return gap > 2.0 * M_PI - tolerance ? 0.0 : gap;
+    };
+    double below = 2.0 * M_PI, above = 2.0 * M_PI;  // to the nearest surface side each way
+    for (int w : it->second) {
+      const double a = turn(w);
+      below = std::min(below, wrapped(low - a));
+      above = std::min(above, wrapped(a - high));
+    }
+    return below + above <= tolerance;
+  };
+  static const int edge_ends[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  double smallest = 180.0;
+  for (const Tetrahedron& t : mesh.tets) {
+    const auto dihedral = dihedral_angles_deg(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                              mesh.vertices[t[2]], mesh.vertices[t[3]]);
+    const int e =
+        static_cast<int>(std::min_element(dihedral.begin(), dihedral.end()) - dihedral.begin());
+    if (dihedral[e] >= smallest) continue;
+    const int a = edge_ends[e][0], b = edge_ends[e][1];
+    int others[2], n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != a && k != b) others[n++] = t[k];
+    if (pinned(t[a], t[b], others[0], others[1])) continue;
+    smallest = dihedral[e];
+  }
+  return smallest;
 }
 
 SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg) {
@@ -1112,7 +1179,7 @@ bool wants_surface_rounds(const StructuralModel& model, const TetmeshOptions& op
   if (!options.keep_surface || !(bound > 0.0) || is_needle_filled(info.surface_needles, model))
     return false;
   smooth(options, log, info, best, smoothing_seconds);
-  return min_dihedral(best.mesh) < bound;
+  return openable_min_dihedral(best.mesh) < bound;
 }
 
 /// Surface bisection rounds (see TetmeshOptions::refine_surface_below_deg) under the tets
@@ -1122,7 +1189,7 @@ bool wants_surface_rounds(const StructuralModel& model, const TetmeshOptions& op
 void refine_surface(const StructuralModel& model, const TetmeshOptions& options, Logger& log,
                     double bound_deg, TetmeshRun& info, ConvertedMesh& best, ExtraTime& extra,
                     double& smoothing_seconds) {
-  double best_angle = min_dihedral(best.mesh);
+  double best_angle = openable_min_dihedral(best.mesh);
   std::shared_ptr<const StructuralModel> refined = info.refined_model;  // by the size rounds
   const int size_rounds = info.size_rounds, size_edges = info.size_bisected_edges;
   int bisected = 0, rounds = 0;
@@ -1149,10 +1216,10 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
     }
     spent = spent || trial.extra_time_spent;
     smooth(options, log, trial, mesh, smoothing_seconds);
-    const double angle = min_dihedral(mesh.mesh);
+    const double angle = openable_min_dihedral(mesh.mesh);
     log.debug("tetmesh: surface bisection round " + std::to_string(round) + " under " +
               number(bound_deg) + " deg: " + std::to_string(split) +
-              " surface edges split, min dihedral " + number(angle) + " deg (was " +
+              " surface edges split, min dihedral off wedges " + number(angle) + " deg (was " +
               number(best_angle) + ")");
     if (!(angle > best_angle) || mesh.split_facets > best.split_facets) break;
     if (options.bounded() && !tets_over_bound(mesh.mesh, options).empty()) break;
@@ -1172,8 +1239,8 @@ void refine_surface(const StructuralModel& model, const TetmeshOptions& options,
   if (bisected > 0)
     log.info("tetmesh: " + std::to_string(bisected) + " surface edges bisected in " +
              std::to_string(rounds) + " rounds (same surfaces, finer triangles) under tets " +
-             "flatter than " + number(bound_deg) + " deg: min dihedral " + number(best_angle) +
-             " deg");
+             "flatter than " + number(bound_deg) + " deg: min dihedral off the surfaces' wedges " +
+             number(best_angle) + " deg");
 }
 
 /// The polish run (TetmeshOptions::polish_dihedral_deg): TetGen once more, on the surfaces and
@@ -1207,8 +1274,10 @@ void polish(const StructuralModel& model, const TetmeshOptions& options, Logger&
   smooth(options, log, trial, mesh, smoothing_seconds);
   const double before = min_dihedral(best.mesh), after = min_dihedral(mesh.mesh);
   const auto under = [](const VolumeMesh& m) { return dihedral_census(m)[kCensusBin15Deg]; };
-  const bool kept = after >= before && mesh.split_facets <= best.split_facets &&
-                    (!options.bounded() || tets_over_bound(mesh.mesh, options).empty());
+  const bool kept =
+      (same_angle(after, before) ? under(mesh.mesh) <= under(best.mesh) : after > before) &&
+      mesh.split_facets <= best.split_facets &&
+      (!options.bounded() || tets_over_bound(mesh.mesh, options).empty());
   log.debug("tetmesh: polish run to " + number(bound) + " deg: min dihedral " + number(after) +
             " deg (was " + number(before) + "), tets under " +
             number(kDihedralCensusDeg[kCensusBin15Deg]) + " deg " +
@@ -1243,10 +1312,10 @@ std::shared_ptr<const StructuralModel> with_slid_points(const StructuralModel& m
 }
 
 /// True when `a` is the better tet mesh: a larger smallest dihedral angle, else fewer tets under
-/// the census' 15°.
+/// the census' 15° (see same_angle()).
 bool better(const VolumeMesh& a, const VolumeMesh& b) {
   const double angle_a = min_dihedral(a), angle_b = min_dihedral(b);
-  if (angle_a != angle_b) return angle_a > angle_b;
+  if (!same_angle(angle_a, angle_b)) return angle_a > angle_b;
   return dihedral_census(a)[kCensusBin15Deg] < dihedral_census(b)[kCensusBin15Deg];
 }
 
@@ -1322,13 +1391,16 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
       smooth(options, log, c.info, c.mesh, smoothing_seconds);
     };
     add_candidate(as_given, as_given_info);
-    const double bound = options.refine_surface_below_deg, lowest = min_dihedral(as_given.mesh);
+    const double bound = options.refine_surface_below_deg;
+    const double lowest = openable_min_dihedral(as_given.mesh);
     std::vector<double> sets;  // the bound, halved while tets are below it, the lowest first
     for (double below = bound; below > lowest && sets.size() < kRoundSets; below *= 0.5)
       sets.insert(sets.begin(), below);
     bool spent = false;
     for (const double below : sets) {
-      const auto reached = [&](const Candidate& c) { return min_dihedral(c.mesh.mesh) >= bound; };
+      const auto reached = [&](const Candidate& c) {
+        return openable_min_dihedral(c.mesh.mesh) >= bound;
+      };
       if (std::any_of(candidates.begin(), candidates.end(), reached)) break;
       best = as_given;
       info = as_given_info;

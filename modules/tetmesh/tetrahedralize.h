@@ -105,20 +105,22 @@ struct TetmeshOptions {
   /// surface edges under such tets are split at their midpoints by longest-edge bisection (see
   /// surface_bisection.h: the surfaces keep their exact geometry, their triangles their shape
   /// within a factor 2 of angle) and TetGen runs again, as long as the smallest dihedral angle
-  /// rises. These are mostly tets across a layer thinner than its triangles are wide: all four
-  /// vertices on the layer's two sides, angles of about 1.4 × thickness / edge radians, halved
-  /// edges double them. Sets of rounds start from the surfaces as given, under a quarter of
-  /// this bound, half of it, and the bound (kRoundSets); the best of their meshes and the one
-  /// without bisection, each polished, is kept. The output triangles are then the finer ones
-  /// (TetmeshRun::refined_model); 0 keeps the model's triangles exactly.
+  /// of the tets not pinned by a wedge of the surfaces rises. These are mostly tets across a layer
+  /// thinner than its triangles are wide: all four vertices on the layer's two sides, angles of
+  /// about 1.4 × thickness / edge radians, halved edges double them. Sets of rounds start from the
+  /// surfaces as given, under a quarter of this bound, half of it, and the bound (kRoundSets); the
+  /// best of their meshes and the one without bisection, each polished, is kept. The output
+  /// triangles are then the finer ones (TetmeshRun::refined_model); 0 keeps the model's triangles
+  /// exactly.
   double refine_surface_below_deg = kSurfaceSideDeg;
   /// At most this many bisection rounds in each set (each one halves the edges it splits).
   int refine_surface_rounds = 4;
   /// A last TetGen run to this dihedral bound (`q<ratio>/<angle>`, degrees), with its own
   /// sliver passes, on the surfaces and interior points the runs above kept: TetGen splits the
   /// tets it can reach (off the kept surfaces) up to this bound, where the decisions above
-  /// chase min_dihedral_deg. Kept only when its smallest dihedral angle is no lower, no more
-  /// triangles are split and the volume bound holds. 0, or not above min_dihedral_deg: none.
+  /// chase min_dihedral_deg. Kept only when its smallest dihedral angle is higher, or the same
+  /// with no more tets under kSmoothBelowDeg, no more triangles are split and the volume bound
+  /// holds. 0, or not above min_dihedral_deg: none.
   double polish_dihedral_deg = 15.0;
   /// Last, the points of the tets under kSmoothBelowDeg move to where the smallest dihedral
   /// angle of their tets is largest, each move kept only when that angle rises
@@ -199,6 +201,12 @@ struct SliverCensus {
 /// Counts the tets of `mesh` below `bound_deg` by group (see SliverCensus); mesh.triangles are
 /// the surfaces, their parts triangle_part (triangle_surface when it is empty).
 SliverCensus sliver_census(const VolumeMesh& mesh, double bound_deg);
+
+/// The smallest dihedral angle of the tets of `mesh` not pinned by a wedge of its surfaces (180
+/// when none): a tet whose flattest angle is at a surface edge and fills alone the sector between
+/// the surface triangles around that edge has the surfaces' own angle there, whatever is done
+/// with the tets or the surface triangles. The surface bisection judges its rounds by the others.
+double openable_min_dihedral(const VolumeMesh& mesh);
 
 /// What a run did, beyond the mesh.
 struct TetmeshRun {

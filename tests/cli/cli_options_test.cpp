@@ -100,8 +100,12 @@ TEST(CliOptions, EveryGivenSizeRuleApplies) {
   for (const nlohmann::json& s : report.at("remesh").at("sizes").at("surfaces")) {
     const std::string name = s.at("name");
     const double asked = s.at("asked");
-    if (name == "horizon") EXPECT_EQ(asked, 0.1);
-    if (name == "zmin" || name == "zmax") EXPECT_EQ(asked, 0.12);
+    if (name == "horizon") {
+      EXPECT_EQ(asked, 0.1);
+    }
+    if (name == "zmin" || name == "zmax") {
+      EXPECT_EQ(asked, 0.12);
+    }
     sized += name == "horizon" || name == "zmin" || name == "zmax";
   }
   EXPECT_EQ(sized, 3);

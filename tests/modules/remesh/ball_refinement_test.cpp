@@ -73,8 +73,11 @@ TEST(TopologicalBall, ACellHoldingFourCornersAsksForThreeMore) {
   const auto failures =
       find_ball_violations(geometry, compute_restricted_voronoi_diagram(geometry, seeds));
   ASSERT_EQ(count(failures, BallViolation::Corners), static_cast<int>(model.corners.size()) - 1);
-  for (const BallViolation& v : failures)
-    if (v.kind == BallViolation::Corners) EXPECT_NEAR(v.separation, 1.0, 1e-12);
+  for (const BallViolation& v : failures) {
+    if (v.kind == BallViolation::Corners) {
+      EXPECT_NEAR(v.separation, 1.0, 1e-12);
+    }
+  }
 }
 
 TEST(TopologicalBall, ACellAcrossAThinLayerHasUnlinkedPieces) {

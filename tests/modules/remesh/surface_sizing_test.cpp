@@ -87,7 +87,9 @@ TEST(SurfaceSizing, ACoarserSurfaceKeepsTheFinerSizeWhereItMeetsOthers) {
   for (int v : vertices_of(model, "zmin")) {
     const Vec3 x = file_point(model, v);
     EXPECT_LE(s.size[v], 0.5);
-    if (x.x() == 0.0 || x.x() == 1.0 || x.y() == 0.0 || x.y() == 1.0) EXPECT_EQ(s.size[v], 0.25);
+    if (x.x() == 0.0 || x.x() == 1.0 || x.y() == 0.0 || x.y() == 1.0) {
+      EXPECT_EQ(s.size[v], 0.25);
+    }
     if (std::abs(x.x() - 0.5) < 1e-12 && std::abs(x.y() - 0.5) < 1e-12) centre = s.size[v];
   }
   EXPECT_NEAR(centre, 0.25 + 0.3 * 0.5, 1e-12);
@@ -170,7 +172,9 @@ TEST(SizeField, InputTrianglesLargerThanTheSizesAreBisected) {
       const int a = t[k], b = t[(k + 1) % 3];
       nearest = std::min(nearest, (model.vertices[a] - well).norm());
       const double shorter = std::min(s.size[a], s.size[b]);
-      if (shorter < h) EXPECT_LE((model.vertices[a] - model.vertices[b]).norm(), shorter + 1e-12);
+      if (shorter < h) {
+        EXPECT_LE((model.vertices[a] - model.vertices[b]).norm(), shorter + 1e-12);
+      }
     }
   EXPECT_LT(nearest, 0.05);  // a vertex came near the point, where the size is asked
   // Away from the point (sizes of h) nothing was split: the model stays as coarse as it was.

@@ -195,15 +195,21 @@ double farthest_from_surfaces(const VolumeMesh& start, const VolumeMesh& moved) 
   return farthest;
 }
 
+// `start` smoothed once, surface points sliding by a hundredth of an edge.
+VolumeMesh smoothed_once(const VolumeMesh& start) {
+  VolumeMesh mesh = start;
+  SliverSmoothingOptions first;
+  first.surface_slide = 0.01;
+  smooth_sliver_points(mesh, first);
+  return mesh;
+}
+
 TEST(SliverSmoothing, ASecondSmoothingSlidesFromTheReferenceAndKeepsTheFlatTetsCounted) {
   // Smoothed once with a small slide, then again from the vertices as they were with five
   // times the slide, no point gaining a tet under 15 deg: the smallest angle and the
   // count under 15 deg never get worse, and the slide is measured from the start, not added.
   const VolumeMesh start = thin_layer_mesh(0.3);
-  VolumeMesh mesh = start;
-  SliverSmoothingOptions first;
-  first.surface_slide = 0.01;
-  smooth_sliver_points(mesh, first);
+  VolumeMesh mesh = smoothed_once(start);
   const VolumeQuality once = measure_volume(mesh);
   SliverSmoothingOptions second;
   second.surface_slide = 0.05;
@@ -240,13 +246,11 @@ TEST(SliverSmoothing, TheDeficitRaisesTheTetsUnderTheBoundWhereTheFlattestCannot
   // still raises the others under 15 deg: their shortfall falls, the count and the smallest
   // angle do not get worse.
   const VolumeMesh start = thin_layer_mesh(0.3);
-  VolumeMesh mesh = start;
-  SliverSmoothingOptions first;
-  first.surface_slide = 0.01;
-  smooth_sliver_points(mesh, first);
+  VolumeMesh mesh = smoothed_once(start);
   const VolumeQuality once = measure_volume(mesh);
   const double shortfall = deficit_under_15(mesh);
-  SliverSmoothingOptions deficit = first;
+  SliverSmoothingOptions deficit;
+  deficit.surface_slide = 0.01;
   deficit.deficit = true;
   deficit.kept_count_below_deg = 15.0;
   deficit.reference = start.vertices;

@@ -674,6 +674,29 @@ TEST(Tetrahedralize, SurfaceBisectionNeverEndsBelowTheSurfacesAsGiven) {
   }
 }
 
+TEST(Tetrahedralize, AWedgeOfTheSurfacesPinsTheTetThatFillsIt) {
+  // Two tets on edge 0-1 (the z axis), apexes 2 and 3 at 3 and 60 degrees about it from
+  // vertex 4's side. With surface triangles (0 1 4) and (0 1 5), 5 in the half-plane of 2 (the
+  // tet's face need not be the surface triangle), the 3 degree tet fills the wedge between
+  // them: pinned, and the smallest openable angle is the other tet's. Without (0 1 5) the
+  // sector is open to 360 degrees and the tet is not pinned.
+  const auto at = [](double deg, double radius) {
+    return Vec3(radius * std::cos(deg * M_PI / 180.0), radius * std::sin(deg * M_PI / 180.0), 0.5);
+  };
+  VolumeMesh mesh;
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(0, 0, 1), at(3.0, 1.0),
+                   at(60.0, 1.0), at(0.0, 1.0),  at(3.0, 2.0)};
+  mesh.tets = {{0, 1, 4, 2}, {0, 1, 2, 3}};
+  mesh.tet_region = {0, 0};
+  mesh.region_names = {"r"};
+  mesh.triangles = {{0, 1, 4}, {0, 1, 5}};
+  const double flat = measure_volume(mesh).min_dihedral_deg;
+  ASSERT_LT(flat, 3.0 + 1e-9);
+  EXPECT_GT(openable_min_dihedral(mesh), flat + 1.0);
+  mesh.triangles.pop_back();
+  EXPECT_NEAR(openable_min_dihedral(mesh), flat, 1e-9);
+}
+
 TEST(Tetrahedralize, ThinLayerSizingOfTheRemeshOpensTheTetsAcrossTheLayer) {
   // A layer 0.01 thick remeshed with cells of about 0.2: whatever TetGen does, the tets across
   // it join vertices 0.2 apart on one side to vertices 0.01 above on the other. The remesher's
