@@ -1426,14 +1426,14 @@ VolumeMesh tetrahedralize(const StructuralModel& model, const TetmeshOptions& op
   if (info.slid_points > 0) {
     if (auto slid = with_slid_points(info.refined_model ? *info.refined_model : model, best.mesh))
       info.refined_model = std::move(slid);
-    const std::string further = info.further_slide > 0.0 ? ", " + number(info.further_slide) +
-                                                               " under tets flatter than " +
-                                                               number(kSurfaceSideDeg) + " deg"
-                                                         : "";
+    const std::string further =
+        options.flat_surface_slide > options.surface_slide
+            ? ", up to " + number(options.flat_surface_slide) + " x at the points of flat tets"
+            : std::string();
     log.info("tetmesh: " + std::to_string(info.slid_points) +
              " surface points slid along their surfaces for the tets (the triangles within " +
-             number(options.surface_slide) + further +
-             " x the local edge of where they were; --surface-slide 0 keeps them)");
+             number(options.surface_slide) + " x the local edge of where they were" + further +
+             "; --surface-slide 0 keeps them)");
   }
   info.tetgen_seconds = extra.total();  // every run's, kept or not
   info.tetgen_tets_below = first_tets_below;
