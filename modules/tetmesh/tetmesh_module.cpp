@@ -23,7 +23,8 @@ namespace voroseal {
 
 namespace {
 
-// Wedges between surfaces up to this angle are looked for (thinnest_wedge_deg).
+// Wedges between surfaces, and free borders leaving a surface (border_gaps.h), up to this angle
+// are looked for (thinnest_wedge_deg, thinnest_border_gap_deg).
 constexpr double kWedgeReportDeg = 30.0;
 // Tets with a dihedral angle under this are nearly flat: finite-element and finite-volume
 // solvers fail on them or lose their accuracy there, so they are warned about.
@@ -300,6 +301,9 @@ class TetmeshModule : public Module {
     };
     // The thinnest wedge between surfaces inside a region: no mesh keeping them does better.
     const std::vector<ContactWedge> wedges = thin_contact_wedges(model, kWedgeReportDeg);
+    // The thinnest gap where a free border leaves a surface: tets across it are flat unless the
+    // surfaces are meshed finer there.
+    const std::vector<BorderGap> gaps = thin_border_gaps(model, kWedgeReportDeg);
     nlohmann::json report = {
         {"switches", run.switches},
         {"input",
@@ -339,6 +343,8 @@ class TetmeshModule : public Module {
           {"edges", run.size_bisected_edges}}},
         {"thinnest_wedge_deg",
          wedges.empty() ? nlohmann::json() : nlohmann::json(wedges.front().angle_deg)},
+        {"thinnest_border_gap_deg",
+         gaps.empty() ? nlohmann::json() : nlohmann::json(gaps.front().angle_deg)},
         {"nonconforming_triangles", nonconforming},
         {"nonpositive_tets", quality.nonpositive_tets},
         {"min_dihedral_deg", quality.min_dihedral_deg},
@@ -415,9 +421,10 @@ class TetmeshModule : public Module {
       const std::string where = file_point(centre, mesh->frame.origin);
       // A free border running on just off a surface past their corner: the gap between them,
       // not a layer, is what the surface triangles are too wide for.
-      const std::vector<BorderGap> gaps = thin_border_gaps(model, options.min_dihedral_deg);
-      // The tet is in a gap when it is as near the gap's border as the border's edges are long.
+      // The tet is in a gap (under the dihedral bound) when it is as near the gap's border as the
+      // border's edges are long.
       const auto near = std::find_if(gaps.begin(), gaps.end(), [&](const BorderGap& g) {
+        if (!(g.angle_deg < options.min_dihedral_deg)) return false;
         double nearest = (centre - model.vertices[g.apex]).norm(), edge = 0.0;
         for (size_t i = 0; i < g.border.size(); ++i) {
           const Vec3& v = model.vertices[g.border[i]];

@@ -193,6 +193,14 @@ TEST(TetmeshModule, NamesTheBorderGapItsFlattestTetsLieIn) {
     const bool named =
         text.find("in the gap between the free border of fault") != std::string::npos;
     EXPECT_EQ(named, angle < 10.0) << text;
+    // The report gives the gap's angle whatever the tets (up to 30 degrees).
+    const auto& gap = context.report.at("tetmesh").at("thinnest_border_gap_deg");
+    if (angle < 30.0) {
+      ASSERT_TRUE(gap.is_number());
+      EXPECT_NEAR(gap.get<double>(), angle, 1e-9);
+    } else {
+      EXPECT_TRUE(gap.is_null());
+    }
   }
 }
 
