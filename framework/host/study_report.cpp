@@ -99,13 +99,15 @@ std::vector<std::string> swept_labels(const StudyOutcome& outcome) {
 }
 
 // The summary columns after the quality ones, taken from the steps' reports: tets,
-// min_dihedral_deg and thinnest_wedge_deg (the bound the surfaces set on it) from tetmesh;
+// min_dihedral_deg, thinnest_wedge_deg (the bound the surfaces set on it) and
+// thinnest_border_gap_deg (where a free border leaves a surface) from tetmesh;
 // from remesh's topology report, whether the regions and their adjacency were kept, how many
 // input features have no counterpart (all / larger than a Voronoi cell), how many pockets are
 // left (output regions that are no input region) and how many were opened again.
 const std::vector<std::string> kStepColumns = {"tets",
                                                "min_dihedral_deg",
                                                "thinnest_wedge_deg",
+                                               "thinnest_border_gap_deg",
                                                "regions_preserved",
                                                "features_lost",
                                                "features_lost_larger_than_cell",
@@ -162,7 +164,8 @@ RunMeasures measure_run(const Context& context) {
     const json& t = context.report["tetmesh"];
     if (t.contains("tets")) row["tets"] = t["tets"];
     if (t.contains("min_dihedral_deg")) row["min_dihedral_deg"] = t["min_dihedral_deg"];
-    if (t.contains("thinnest_wedge_deg")) row["thinnest_wedge_deg"] = t["thinnest_wedge_deg"];
+    for (const char* key : {"thinnest_wedge_deg", "thinnest_border_gap_deg"})
+      if (t.contains(key)) row[key] = t[key];
   }
   if (row["tets"].is_null() && context.volume)
     row["tets"] = static_cast<long>(context.volume->tets.size());
