@@ -8,22 +8,6 @@
 
 namespace voroseal {
 
-namespace {
-
-// The triangles of one part, as model vertex ids.
-std::vector<Triangle> part_triangles(const SurfacePart& part) {
-  std::vector<Triangle> triangles;
-  triangles.reserve(part.mesh.n_faces());
-  for (const auto& f : part.mesh.faces()) {
-    const auto h = f.halfedge();
-    triangles.push_back({part.model_vertex[h.from().idx()], part.model_vertex[h.to().idx()],
-                         part.model_vertex[h.next().to().idx()]});
-  }
-  return triangles;
-}
-
-}  // namespace
-
 std::vector<BorderGap> thin_border_gaps(const StructuralModel& model, double max_deg) {
   std::vector<BorderGap> gaps;
   const double max_sine = std::sin(std::min(max_deg, 90.0) * M_PI / 180.0);
@@ -53,9 +37,11 @@ std::vector<BorderGap> thin_border_gaps(const StructuralModel& model, double max
       const int apex = along(0);
       for (const int s : parts_at[apex]) {
         if (s == border) continue;
-        if (!trees[s])
-          trees[s] =
-              std::make_unique<TriangleSetDistance>(model.vertices, part_triangles(model.parts[s]));
+        if (!trees[s]) {
+          std::vector<Triangle> triangles;
+          append_part_triangles(model.parts[s], triangles);
+          trees[s] = std::make_unique<TriangleSetDistance>(model.vertices, triangles);
+        }
         // Along the border while it stays within the angle off s: the narrowest point.
         BorderGap gap{apex, -1, border, s, 0.0, {}};
         double least = 2.0;

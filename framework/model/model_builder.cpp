@@ -464,24 +464,14 @@ class ModelBuilder {
       part.source_triangle.push_back(input_triangle_[f]);
     }
     // flatten() follows mesh face order: keep t_ in the same order for the later steps.
-    std::vector<Triangle> triangles;
-    std::vector<int> part;
-    for (size_t p = 0; p < model_.parts.size(); ++p) {
-      const SurfacePart& sp = model_.parts[p];
-      for (const auto& fh : sp.mesh.faces()) {
-        auto h = fh.halfedge();
-        triangles.push_back({sp.model_vertex[h.from().idx()], sp.model_vertex[h.to().idx()],
-                             sp.model_vertex[h.next().to().idx()]});
-        part.push_back(static_cast<int>(p));
-      }
-    }
-    EdgeTable edges = EdgeTable::build(triangles);
+    ModelTriangles flat = flatten(model_);
+    EdgeTable edges = EdgeTable::build(flat.triangles);
     for (EdgeTable::Edge& e : edges.edges) {
       const int k = t_.edges.find(e.a, e.b);
       e.line = t_.edges.edges[k].line;
     }
-    t_.triangles = std::move(triangles);
-    t_.part = std::move(part);
+    t_.triangles = std::move(flat.triangles);
+    t_.part = std::move(flat.part);
     t_.edges = std::move(edges);
   }
 

@@ -97,15 +97,19 @@ ModelTriangles flatten(const StructuralModel& model) {
   t.triangles.reserve(n);
   t.part.reserve(n);
   for (size_t p = 0; p < model.parts.size(); ++p) {
-    const SurfacePart& part = model.parts[p];
-    for (const auto& f : part.mesh.faces()) {
-      auto h = f.halfedge();
-      t.triangles.push_back({part.model_vertex[h.from().idx()], part.model_vertex[h.to().idx()],
-                             part.model_vertex[h.next().to().idx()]});
-      t.part.push_back(static_cast<int>(p));
-    }
+    const size_t before = t.triangles.size();
+    append_part_triangles(model.parts[p], t.triangles);
+    t.part.insert(t.part.end(), t.triangles.size() - before, static_cast<int>(p));
   }
   return t;
+}
+
+void append_part_triangles(const SurfacePart& part, std::vector<Triangle>& out) {
+  for (const auto& f : part.mesh.faces()) {
+    const auto h = f.halfedge();
+    out.push_back({part.model_vertex[h.from().idx()], part.model_vertex[h.to().idx()],
+                   part.model_vertex[h.next().to().idx()]});
+  }
 }
 
 }  // namespace voroseal

@@ -159,5 +159,8 @@ struct ModelTriangles {
   std::vector<int> part;            // surface part of each triangle
 };
 ModelTriangles flatten(const StructuralModel& model);
+/// Appends the triangles of one part to `out`, as model vertex ids in mesh face order (what
+/// flatten() does part by part).
+void append_part_triangles(const SurfacePart& part, std::vector<Triangle>& out);
 
 }  // namespace voroseal
