@@ -173,6 +173,17 @@ struct Smoother {
 
   Vec3 at(int w, int v, const Vec3& p) const { return w == v ? p : mesh.vertices[w]; }
 
+  // worst_cosine() of tet t with v at p, or 2 when the tet exceeds its region's volume bound.
+  double tet_cosine(long t, int v, const Vec3& p) const {
+    std::array<Vec3, 4> q;
+    for (int k = 0; k < 4; ++k) q[k] = at(mesh.tets[t][k], v, p);
+    const int region = mesh.tet_region[t];
+    if (region < static_cast<int>(bounds.size()) && bounds[region] > 0.0 &&
+        tet_volume(q[0], q[1], q[2], q[3]) > bounds[region])
+      return 2.0;
+    return worst_cosine(q);
+  }
+
   // The largest worst_cosine over v's tets with v at p, and the tet where it is; 2 when a tet
   // is not positive or exceeds its region's volume bound. Stops as soon as a tet reaches
   // `stop` (p is then no better than the best so far), trying tet `first` (the worst at the
@@ -181,13 +192,7 @@ struct Smoother {
     double worst = -1.0;
     long where = first;
     const auto visit = [&](long t) {
-      std::array<Vec3, 4> q;
-      for (int k = 0; k < 4; ++k) q[k] = at(mesh.tets[t][k], v, p);
-      const int region = mesh.tet_region[t];
-      double c = 2.0;
-      if (!(region < static_cast<int>(bounds.size()) && bounds[region] > 0.0 &&
-            tet_volume(q[0], q[1], q[2], q[3]) > bounds[region]))
-        c = worst_cosine(q);
+      const double c = tet_cosine(t, v, p);
       if (c > worst) {
         worst = c;
         where = t;
@@ -202,11 +207,8 @@ struct Smoother {
   // The tets of v's star flatter than counted_cosine allows, with v at p.
   int star_flat(int v, const Vec3& p) const {
     int flat = 0;
-    for (long i = tets_at.begin(v); i < tets_at.end(v); ++i) {
-      const Tetrahedron& t = mesh.tets[tets_at.items[i]];
-      const std::array<Vec3, 4> q{at(t[0], v, p), at(t[1], v, p), at(t[2], v, p), at(t[3], v, p)};
-      flat += worst_cosine(q) > counted_cosine;
-    }
+    for (long i = tets_at.begin(v); i < tets_at.end(v); ++i)
+      flat += tet_cosine(tets_at.items[i], v, p) > counted_cosine;
     return flat;
   }
 
@@ -215,14 +217,7 @@ struct Smoother {
   std::pair<double, double> star_deficit(int v, const Vec3& p) const {
     double deficit = 0.0, worst = -1.0;
     for (long i = tets_at.begin(v); i < tets_at.end(v); ++i) {
-      const long t = tets_at.items[i];
-      std::array<Vec3, 4> q;
-      for (int k = 0; k < 4; ++k) q[k] = at(mesh.tets[t][k], v, p);
-      const int region = mesh.tet_region[t];
-      if (region < static_cast<int>(bounds.size()) && bounds[region] > 0.0 &&
-          tet_volume(q[0], q[1], q[2], q[3]) > bounds[region])
-        return {std::numeric_limits<double>::infinity(), 2.0};
-      const double c = worst_cosine(q);
+      const double c = tet_cosine(tets_at.items[i], v, p);
       if (!(c < 1.0)) return {std::numeric_limits<double>::infinity(), 2.0};
       deficit += std::max(0.0, c - deficit_cosine);
       worst = std::max(worst, c);

@@ -420,9 +420,8 @@ class TetmeshModule : public Module {
       const Vec3 centre = tet_centre(run.slivers.flattest_layer_tet);
       const std::string where = file_point(centre, mesh->frame.origin);
       // A free border running on just off a surface past their corner: the gap between them,
-      // not a layer, is what the surface triangles are too wide for.
-      // The tet is in a gap (under the dihedral bound) when it is as near the gap's border as the
-      // border's edges are long.
+      // not a layer, is what the surface triangles are too wide for. The tet is in a gap (under
+      // the dihedral bound) when it is as near the gap's border as the border's edges are long.
       const auto near = std::find_if(gaps.begin(), gaps.end(), [&](const BorderGap& g) {
         if (!(g.angle_deg < options.min_dihedral_deg)) return false;
         double nearest = (centre - model.vertices[g.apex]).norm(), edge = 0.0;
