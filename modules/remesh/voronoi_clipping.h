@@ -59,6 +59,19 @@ struct ClipWorkspace {
   }
 };
 
+/// Whether seed list[j], at squared distance dq2 from p_s, is at the very place of a seed
+/// listed before it (lists are ordered by distance, then index).
+inline bool repeats_earlier(const int* list, int j, const Vec3* seeds, const Vec3& ps, double dq2) {
+  const Vec3& pq = seeds[list[j]];
+  for (int k = j - 1; k >= 0; --k) {
+    const Vec3& pk = seeds[list[k]];
+    const double dx = pk[0] - ps[0], dy = pk[1] - ps[1], dz = pk[2] - ps[2];
+    if (dx * dx + dy * dy + dz * dz != dq2) return false;
+    if (pk == pq) return true;
+  }
+  return false;
+}
+
 /// Clips `rec` by the Voronoi cell of seed s. Returns the number of vertices (0: empty, else
 /// >= 3) and points `out` at them (valid until the next call with the same workspace).
 /// Vertices keep the orientation of the triangle. `used` receives how many neighbours of s
@@ -100,6 +113,7 @@ int clip_triangle(const TriangleRecord& rec, int s, const Vec3* seeds, const See
       r2 = std::max(r2, v.d2);
     }
     bool certified = false;
+    double previous_dq2 = -1.0;
     for (int j = 0; j < count; ++j) {
       const int q = list[j];
       const Vec3& pq = seeds[q];
@@ -111,6 +125,12 @@ int clip_triangle(const TriangleRecord& rec, int s, const Vec3* seeds, const See
         used = j + 1;
         break;
       }
+      // A copy of a seed listed before it (as far, so just before) has the same bisector,
+      // already applied; clipping again could hand that edge to the copy, whose cell is empty,
+      // and the flood would then miss the cell beyond.
+      const bool same_distance = dq2 == previous_dq2;
+      previous_dq2 = dq2;
+      if (same_distance && repeats_earlier(list, j, seeds, ps, dq2)) continue;
       bool all_in = true, all_out = true;
       const bool tie_in = s < q;
       for (int i = 0; i < n; ++i) {

@@ -12,6 +12,7 @@
 #include "modules/remesh/restricted_voronoi_diagram.h"
 #include "modules/remesh/seed_energy.h"
 #include "modules/remesh/seed_sampling.h"
+#include "modules/remesh/voronoi_clipping.h"
 #include "tests/modules/remesh/synthetic_surfaces.h"
 #include "tests/support/test_models.h"
 
@@ -260,6 +261,44 @@ TEST(RestrictedVoronoiDiagram, DegenerateTrianglesAndCoincidentSeeds) {
   for (int i : {n - 3, n - 2, n - 1}) {
     EXPECT_EQ(e.mass[i], 0.0);
     EXPECT_EQ(e.cvt_gradient[i], Vec3::Zero());
+  }
+}
+
+// Sums the area of the polygons of every triangle record.
+struct AreaVisitor {
+  std::vector<double>* area = nullptr;
+  const TriangleRecord* first = nullptr;
+  void begin_chunk(int) {}
+  void end_chunk(int) {}
+  void polygon(int, const TriangleRecord& rec, const rvd_detail::ClipVertex* poly, int n) {
+    Vec3 twice = Vec3::Zero();
+    for (int i = 1; i + 1 < n; ++i)
+      twice += (poly[i].x - poly[0].x).cross(poly[i + 1].x - poly[0].x);
+    (*area)[&rec - first] += 0.5 * twice.norm();
+  }
+};
+
+TEST(RestrictedVoronoiDiagram, EveryStartFloodsTheWholeTriangleAlsoBesideCoincidentSeeds) {
+  // The flood through a triangle must reach every cell meeting it from whichever cell it starts.
+  // Beside a seed and its copy, both bisectors are one plane: the edge there must name the seed
+  // that owns the cell beyond, not its copy (an empty cell, where the flood would stop).
+  const StructuralModel model = build_model(test::degenerate_square(6));
+  const ModelGeometry geometry(model);
+  std::vector<Vec3> seeds = random_seeds(geometry, 40, 8);
+  for (int copy : {3, 3, 10, 17}) seeds.push_back(seeds[copy]);
+  const int n = static_cast<int>(seeds.size());
+  const std::vector<TriangleRecord>& records = geometry.triangles();
+  SeedNeighbours nb;
+  nb.build(seeds.data(), n, 16, 1);
+  std::vector<rvd_detail::TraversalState> states(1);
+  for (int start = 0; start < n; ++start) {
+    std::vector<double> area(records.size(), 0.0);
+    std::vector<AreaVisitor> visitors{{&area, records.data()}};
+    std::vector<int> hint(records.size(), start);
+    rvd_detail::traverse_restricted_polygons<false>(geometry, seeds.data(), n, nb, hint, states,
+                                                    visitors, 1);
+    for (size_t r = 0; r < records.size(); ++r)
+      ASSERT_NEAR(area[r], records[r].area, 1e-12) << "record " << r << ", start " << start;
   }
 }
 
