@@ -329,7 +329,8 @@ bool try_flip(Editor& e, int u, int v, double cos_flat, bool strict) {
   if (!strict && n1.dot(n2) < cos_flat * n1.norm() * n2.norm()) {
     if (before >= e.thresholds().sharp_deg || e.projector() == nullptr || e.tolerance() <= 0.0) return false;
     const Vec3 middle = 0.5 * (e.p(c) + e.p(d));
-    if (e.projector()->distance_to_part(e.mesh().triangle_part[t1], middle) > e.tolerance()) return false;
+    const int part = e.mesh().triangle_part[t1];
+    if (e.projector()->distance_to_part(part, middle, e.p(c)) > e.tolerance()) return false;
   }
   const Triangle g1{c, u, d}, g2{d, v, c};
   const double after = std::min(min_angle_deg(e.p(c), e.p(u), e.p(d)), min_angle_deg(e.p(d), e.p(v), e.p(c)));
@@ -452,7 +453,8 @@ bool unfolded_move(Editor& e, const SurfaceProjector& projector, int v, const Ve
   const VertexFeature f = e.mesh().features[v];
   const Vec3 old = e.p(v);
   const Vec3 moved = old + step * (target - old);
-  result = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved) : projector.on_contact(f.id, moved);
+  result = f.kind == VertexFeature::Surface ? projector.on_part(f.id, moved, old)
+                                            : projector.on_contact(f.id, moved);
   return result != old && ring_unfolded_at(e, v, result);
 }
 
@@ -505,10 +507,10 @@ bool split_longest_edge(Editor& e, const SurfaceProjector& projector, int t, boo
   if (best < 0) return false;
   const int u = f[best], v = f[(best + 1) % 3];
   const Vec3 middle = 0.5 * (e.p(u) + e.p(v));
-  return best_contact >= 0
-             ? try_split(e, u, v, projector.on_contact(best_contact, middle),
-                         {VertexFeature::Contact, best_contact})
-             : try_split(e, u, v, projector.on_part(part, middle), {VertexFeature::Surface, part});
+  return best_contact >= 0 ? try_split(e, u, v, projector.on_contact(best_contact, middle),
+                                       {VertexFeature::Contact, best_contact})
+                           : try_split(e, u, v, projector.on_part(part, middle, e.p(u)),
+                                       {VertexFeature::Surface, part});
 }
 
 void flip_around(Editor& e, int v, int part, double floor_deg, std::vector<int>& touched) {

@@ -47,7 +47,8 @@ int refine_for_fidelity(Editor& e, const SurfaceProjector& projector, double tol
   auto centroid_stray = [&](int t) {
     const Triangle& f = e.mesh().triangles[t];
     const Vec3 centroid = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
-    return (projector.on_part(e.mesh().triangle_part[t], centroid) - centroid).norm();
+    const int part = e.mesh().triangle_part[t];
+    return (projector.on_part(part, centroid, e.p(f[0])) - centroid).norm();
   };
   // Measured in parallel, reading only: the stars are tidied first (Editor::star()).
   const RemeshedSurface& s = e.mesh();
@@ -201,12 +202,15 @@ int refine_toward_input(Editor& e, double tolerance, int max_splits) {
     }
   if (tris.empty()) return 0;
   const TriangleSetDistance distance(e.mesh().vertices, tris);
+  // Every input vertex measured in parallel; the sort fixes the order whatever the threads did.
+  const long nv = static_cast<long>(in.vertices.size());
+  std::vector<double> d2(nv, 0.0);
+#pragma omp parallel for schedule(dynamic, 1024)
+  for (long v = 0; v < nv; ++v)
+    if (part_of[v] >= 0) d2[v] = distance.squared_distance(in.vertices[v]);
   std::vector<std::pair<double, int>> far;
-  for (size_t v = 0; v < in.vertices.size(); ++v) {
-    if (part_of[v] < 0) continue;
-    const double d2 = distance.squared_distance(in.vertices[v]);
-    if (d2 > tolerance * tolerance) far.emplace_back(std::sqrt(d2), static_cast<int>(v));
-  }
+  for (long v = 0; v < nv; ++v)
+    if (d2[v] > tolerance * tolerance) far.emplace_back(std::sqrt(d2[v]), static_cast<int>(v));
   std::sort(far.rbegin(), far.rend());
   std::vector<char> split_once(e.mesh().triangles.size(), 0);
   int inserted = 0;

@@ -205,7 +205,7 @@ bool angle_target(Editor& e, const SurfaceProjector& projector, int v, double ga
   // Toward each neighbour and away from it, in steps of its distance.
   for (int w : nb)
     for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3})
-      consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
+      consider(projector.on_part(f.id, old + t * (e.p(w) - old), old));
   return found;
 }
 
@@ -251,8 +251,9 @@ bool stays_close(Editor& e, const SurfaceProjector& projector, int v, const Vec3
     const int part = e.mesh().triangle_part[t];
     const Vec3 before = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
     const Vec3 after = before + (x - e.p(v)) / 3.0;
-    const double distance = projector.distance_to_part(part, after);
-    if (distance > e.tolerance() && distance > projector.distance_to_part(part, before)) return false;
+    const double distance = projector.distance_to_part(part, after, e.p(f[0]));
+    if (distance > e.tolerance() && distance > projector.distance_to_part(part, before, e.p(f[0])))
+      return false;
   }
   return true;
 }
@@ -311,7 +312,7 @@ bool quality_target(Editor& e, const SurfaceProjector& projector, int v, Vec3& b
         if (better(old + step, planar_score)) planar = old + step;
       }
     if (planar == old) return false;
-    const Vec3 x = projector.on_part(f.id, planar);
+    const Vec3 x = projector.on_part(f.id, planar, old);
     if (better(x, best_score)) best = x;
   }
   if (best == old) return false;
@@ -363,7 +364,8 @@ int collapse_sharp(Editor& e, const SurfaceProjector& projector, double angle_de
       const Triangle& f = e.mesh().triangles[t];
       nearest = std::min(nearest, squared_distance_to_triangle(gone, e.p(f[0]), e.p(f[1]), e.p(f[2])));
       const Vec3 middle = (e.p(f[0]) + e.p(f[1]) + e.p(f[2])) / 3.0;
-      if (projector.distance_to_part(e.mesh().triangle_part[t], middle) > e.tolerance()) return false;
+      const int part = e.mesh().triangle_part[t];
+      if (projector.distance_to_part(part, middle, e.p(f[0])) > e.tolerance()) return false;
     }
     return nearest <= e.tolerance() * e.tolerance();
   };

@@ -48,7 +48,7 @@ void move_candidates(Editor& e, const SurfaceProjector& projector, int v, int co
       if (k == 0) continue;
       Vec3 step = (0.3 * k / surface_steps) * (e.p(w) - old);
       step -= step.dot(normal) * normal;
-      out.push_back(projector.on_part(f.id, old + step));
+      out.push_back(projector.on_part(f.id, old + step, old));
     }
 }
 

@@ -119,7 +119,8 @@ int open_wedge_tets(Editor& e, const SurfaceProjector& projector, double bound_d
         if (!along_contact(e, v, w)) continue;
         for (double t : {0.05, 0.1, 0.2, 0.3, 0.4}) consider(projector.on_contact(f.id, old + t * (e.p(w) - old)));
       } else {
-        for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3}) consider(projector.on_part(f.id, old + t * (e.p(w) - old)));
+        for (double t : {-0.2, -0.1, 0.1, 0.2, 0.3})
+          consider(projector.on_part(f.id, old + t * (e.p(w) - old), old));
       }
     }
     // A wedge thinner than the bound stays that thin whatever slides along the surfaces (modelA6

@@ -70,6 +70,16 @@ Vec3 SurfaceProjector::on_part(int part, const Vec3& x) const {
   return from_cgal(tree->closest_point(to_cgal(x)));
 }
 
+Vec3 SurfaceProjector::on_part(int part, const Vec3& x, const Vec3& near) const {
+  const auto& tree = trees_->part_tree[part];
+  if (!tree) return x;
+  const Point3 hint = to_cgal(near);
+  const Point3 closest = tree->closest_point(to_cgal(x), hint);
+  // Nothing closer than `near`: it may not lie on the part, so ask again without it.
+  if (closest == hint) return on_part(part, x);
+  return from_cgal(closest);
+}
+
 Vec3 SurfaceProjector::on_contact(int contact, const Vec3& x) const {
   const std::vector<int>& line = model_.contacts[contact].vertices;
   Vec3 best = model_.vertices[line.front()];

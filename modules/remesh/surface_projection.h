@@ -20,10 +20,17 @@ class SurfaceProjector {
 
   /// Closest point of surface part `part` to x (local frame).
   Vec3 on_part(int part, const Vec3& x) const;
+  /// The same, searched from `near`, a point of the part close to x (where a vertex stood
+  /// before it moved): only boxes closer than `near` are opened. Any `near` gives the right
+  /// answer: when nothing closer than it is found, the search runs again without it.
+  Vec3 on_part(int part, const Vec3& x, const Vec3& near) const;
   /// Closest point of contact `contact` to x.
   Vec3 on_contact(int contact, const Vec3& x) const;
   /// Distance from x to surface part `part`.
   double distance_to_part(int part, const Vec3& x) const { return (on_part(part, x) - x).norm(); }
+  double distance_to_part(int part, const Vec3& x, const Vec3& near) const {
+    return (on_part(part, x, near) - x).norm();
+  }
 
  private:
   struct Trees;
