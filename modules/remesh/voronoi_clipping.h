@@ -13,7 +13,8 @@
 //    expression, so side(x; q, s) = −side(x; s, q) bit for bit;
 //  - a point with side 0 belongs to the seed of lower index (symbolic tie-break), so every
 //    point of the model belongs to exactly one seed, also for coincident seeds (the higher
-//    index gets an empty cell);
+//    index gets an empty cell), and a seed's copy is not clipped by again (the same bisector,
+//    whose edge must name the seed that owns the cell beyond);
 //  - a bisector crossing a triangle edge (a, b) is computed from the original end points in the
 //    order of increasing model vertex id, so the polygons of the two (or more) triangles
 //    sharing the edge get the very same point.
