@@ -45,18 +45,32 @@ struct ClipVertex {
 constexpr int edge_support(int k) { return -1 - k; }
 constexpr int support_edge(int support) { return -1 - support; }
 
+/// A longer neighbour list fetched for one seed whose list ran out.
+struct ExtendedList {
+  int seed = -1;
+  int size = 0;
+  std::vector<int> list;
+};
+
+/// Extended lists a thread keeps during one traversal, by seed index modulo this: the flood
+/// through a triangle alternates between a few seeds, so keeping one list would fetch the same
+/// one again and again.
+constexpr int kExtendedSlots = 64;
+
 /// Scratch space of one thread; reused across triangles and evaluations (no allocation in the
 /// inner loop once warm).
 struct ClipWorkspace {
   std::vector<ClipVertex> buffer[2];
-  std::vector<int> extended;  // a longer neighbour list for one seed
-  int extended_seed = -1;
-  int extended_size = 0;
+  ExtendedList extended[kExtendedSlots];
   long extended_queries = 0;
 
   ClipWorkspace() {
     buffer[0].resize(64);
     buffer[1].resize(64);
+  }
+  /// Forgets the extended lists (the seeds moved).
+  void forget_extended() {
+    for (ExtendedList& e : extended) e.seed = -1;
   }
 };
 
@@ -90,13 +104,15 @@ int clip_triangle(const TriangleRecord& rec, int s, const Vec3* seeds, const See
   const int* list = nb.neighbours(s);
   int count = nb.list_size(s);
   double bound2 = nb.bound2(s);
+  ExtendedList& extended = ws.extended[s % kExtendedSlots];
   auto extended_bound2 = [&]() {
-    if (ws.extended_size < static_cast<int>(ws.extended.size())) return std::numeric_limits<double>::infinity();
-    return ws.extended_size > 0 ? sq(seeds[ws.extended[ws.extended_size - 1]], ps) : 0.0;
+    if (extended.size < static_cast<int>(extended.list.size()))
+      return std::numeric_limits<double>::infinity();
+    return extended.size > 0 ? sq(seeds[extended.list[extended.size - 1]], ps) : 0.0;
   };
-  if (ws.extended_seed == s) {
-    list = ws.extended.data();
-    count = ws.extended_size;
+  if (extended.seed == s) {
+    list = extended.list.data();
+    count = extended.size;
     bound2 = extended_bound2();
   }
 
@@ -205,12 +221,12 @@ int clip_triangle(const TriangleRecord& rec, int s, const Vec3* seeds, const See
     }
     // The list ran out before the security radius was reached: get a longer one and redo.
     const int want = std::max(32, 2 * count);
-    ws.extended.resize(want);
-    ws.extended_size = nb.nearest_to_seed(s, want, ws.extended.data());
-    ws.extended_seed = s;
+    extended.list.resize(want);
+    extended.size = nb.nearest_to_seed(s, want, extended.list.data());
+    extended.seed = s;
     ++ws.extended_queries;
-    list = ws.extended.data();
-    count = ws.extended_size;
+    list = extended.list.data();
+    count = extended.size;
     bound2 = extended_bound2();
   }
 }
@@ -257,7 +273,7 @@ void traverse_restricted_polygons(const ModelGeometry& geometry, const Vec3* see
     Visitor& visitor = visitors[tid];
     st.visited.assign(num_seeds, -1);
     st.needed.assign(num_seeds, 0);
-    st.clip.extended_seed = -1;
+    st.clip.forget_extended();
     st.stack.reserve(64);
 #pragma omp for schedule(dynamic, 1)
     for (int c = 0; c < nchunks; ++c) {
