@@ -74,14 +74,19 @@ struct ClipWorkspace {
   }
 };
 
+/// |a − b|², by the one expression every side test uses (see the rules above).
+inline double squared_distance(const Vec3& a, const Vec3& b) {
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return dx * dx + dy * dy + dz * dz;
+}
+
 /// Whether seed list[j], at squared distance dq2 from p_s, is at the very place of a seed
 /// listed before it (lists are ordered by distance, then index).
 inline bool repeats_earlier(const int* list, int j, const Vec3* seeds, const Vec3& ps, double dq2) {
   const Vec3& pq = seeds[list[j]];
   for (int k = j - 1; k >= 0; --k) {
     const Vec3& pk = seeds[list[k]];
-    const double dx = pk[0] - ps[0], dy = pk[1] - ps[1], dz = pk[2] - ps[2];
-    if (dx * dx + dy * dy + dz * dz != dq2) return false;
+    if (squared_distance(pk, ps) != dq2) return false;
     if (pk == pq) return true;
   }
   return false;
@@ -95,10 +100,7 @@ template <bool kDensity>
 int clip_triangle(const TriangleRecord& rec, int s, const Vec3* seeds, const SeedNeighbours& nb, ClipWorkspace& ws,
                   const ClipVertex*& out, int& used) {
   const Vec3 ps = seeds[s];
-  auto sq = [](const Vec3& a, const Vec3& b) {
-    const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    return dx * dx + dy * dy + dz * dz;
-  };
+  const auto sq = squared_distance;
 
   // Every seed missing from `list` is at squared distance >= `bound2` from p_s.
   const int* list = nb.neighbours(s);

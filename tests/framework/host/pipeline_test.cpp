@@ -296,18 +296,15 @@ TEST(RunStudy, FailedRunsAreRecordedAndTheStudyGoesOn) {
   // The summary table and the report.
   const std::string csv = read_text(dir / "out/summary.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
-  EXPECT_EQ(
-      csv.rfind("run,model,key,fail,status,vertices,triangles,surfaces,contacts,corners,regions,"
-                "min_angle_deg,"
-                "pct_triangles_angle_below_30,avg_quality,min_quality,area,bbox_diagonal,hausdorff_"
-                "pct,tets,"
-                "min_dihedral_deg,thinnest_wedge_deg,thinnest_border_gap_deg,regions_preserved,"
-                "features_lost,"
-                "features_lost_larger_than_cell,pockets,pockets_opened,time_read_s,"
-                "time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
-                "time_total_s,error\n",
-                0),
-      0u)
+  EXPECT_EQ(csv.rfind("run,model,key,fail,status,vertices,triangles,surfaces,contacts,corners,"
+                      "regions,min_angle_deg,pct_triangles_angle_below_30,avg_quality,min_quality,"
+                      "area,bbox_diagonal,hausdorff_pct,tets,min_dihedral_deg,thinnest_wedge_deg,"
+                      "thinnest_border_gap_deg,regions_preserved,features_lost,"
+                      "features_lost_larger_than_cell,pockets,pockets_opened,time_read_s,"
+                      "time_fake-step_s,time_tetmesh_s,time_write_s,time_picture_s,"
+                      "time_total_s,error\n",
+                      0),
+            0u)
       << csv;
   const json summary = json::parse(read_text(dir / "out/summary.json"));
   EXPECT_EQ(summary.at("runs").size(), 4u);
