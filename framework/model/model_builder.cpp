@@ -102,19 +102,37 @@ class ModelBuilder {
   // Remaps triangles to welded vertices; drops degenerate and duplicated ones; notes points of
   // one group that welding merged (colocated vertices inside a surface).
   void clean_triangles() {
-    std::unordered_map<uint64_t, int> first_point;  // (welded vertex, group) -> input point
-    std::map<std::array<int, 3>, int> seen;
-    std::vector<char> cracked(soup_.groups.size(), 0);
-    for (size_t f = 0; f < soup_.triangles.size(); ++f) {
+    const size_t n = soup_.triangles.size();
+    auto welded = [&](size_t f) {
       const Triangle& in = soup_.triangles[f];
-      const Triangle t{welded_[in[0]], welded_[in[1]], welded_[in[2]]};
+      return Triangle{welded_[in[0]], welded_[in[1]], welded_[in[2]]};
+    };
+    // A triangle on the same three vertices as an earlier one is a duplicate: the sorted
+    // (vertices, triangle) keys put each set's first triangle first.
+    std::vector<char> duplicate(n, 0);
+    {
+      std::vector<std::pair<std::array<int, 3>, int>> keys;
+      keys.reserve(n);
+      for (size_t f = 0; f < n; ++f) {
+        std::array<int, 3> key = welded(f);
+        std::sort(key.begin(), key.end());
+        if (key[0] != key[1] && key[1] != key[2]) keys.emplace_back(key, static_cast<int>(f));
+      }
+      std::sort(keys.begin(), keys.end());
+      for (size_t k = 1; k < keys.size(); ++k)
+        if (keys[k].first == keys[k - 1].first) duplicate[keys[k].second] = 1;
+    }
+    std::unordered_map<uint64_t, int> first_point;  // (welded vertex, group) -> input point
+    first_point.reserve(n / 2);
+    std::vector<char> cracked(soup_.groups.size(), 0);
+    for (size_t f = 0; f < n; ++f) {
+      const Triangle& in = soup_.triangles[f];
+      const Triangle t = welded(f);
       if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
         ++model_.build.degenerate_triangles_dropped;
         continue;
       }
-      std::array<int, 3> key = t;
-      std::sort(key.begin(), key.end());
-      if (!seen.emplace(key, static_cast<int>(f)).second) {
+      if (duplicate[f]) {
         ++model_.build.duplicate_triangles_dropped;
         continue;
       }

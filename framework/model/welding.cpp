@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <unordered_map>
+#include <vector>
 
 namespace voroseal {
 
@@ -38,26 +39,31 @@ WeldResult weld_points(const std::vector<Vec3>& points, double tolerance) {
     return result;
   }
 
-  const double cell = tolerance;
+  // Cells twice the tolerance wide: the points within it of p lie in the two cells per axis on
+  // p's side of its cell's middle, 8 cells to search rather than 27.
+  const double cell = 2.0 * tolerance;
   const double tol2 = tolerance * tolerance;
-  std::unordered_map<std::array<long long, 3>, std::vector<int>, CellHash> grid;
-  grid.reserve(points.size());
-  auto cell_of = [&](const Vec3& p) {
-    return std::array<long long, 3>{static_cast<long long>(std::floor(p.x() / cell)),
-                                    static_cast<long long>(std::floor(p.y() / cell)),
-                                    static_cast<long long>(std::floor(p.z() / cell))};
-  };
+  // Kept points by cell: the first in `head`, the others chained through `next`.
+  std::unordered_map<std::array<long long, 3>, int, CellHash> head;
+  head.reserve(points.size());
+  std::vector<int> next;
+  next.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     const Vec3& p = points[i];
-    const auto c = cell_of(p);
+    std::array<long long, 3> c, low;
+    for (int k = 0; k < 3; ++k) {
+      const double u = p[k] / cell, f = std::floor(u);
+      c[k] = static_cast<long long>(f);
+      low[k] = c[k] - (u - f < 0.5 ? 1 : 0);
+    }
     int found = -1;
     double best = tol2;
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == grid.end()) continue;
-          for (int w : it->second) {
+    for (long long dx = 0; dx <= 1; ++dx)
+      for (long long dy = 0; dy <= 1; ++dy)
+        for (long long dz = 0; dz <= 1; ++dz) {
+          const auto it = head.find({low[0] + dx, low[1] + dy, low[2] + dz});
+          if (it == head.end()) continue;
+          for (int w = it->second; w >= 0; w = next[w]) {
             const double d2 = (points[result.source[w]] - p).squaredNorm();
             if (d2 <= best && (found < 0 || d2 < best || w < found)) {
               best = d2;
@@ -68,7 +74,9 @@ WeldResult weld_points(const std::vector<Vec3>& points, double tolerance) {
     if (found < 0) {
       found = static_cast<int>(result.source.size());
       result.source.push_back(static_cast<int>(i));
-      grid[c].push_back(found);
+      const auto [it, inserted] = head.emplace(c, found);
+      next.push_back(inserted ? -1 : it->second);
+      if (!inserted) it->second = found;
     }
     result.representative[i] = found;
   }
