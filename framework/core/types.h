@@ -27,6 +27,10 @@ struct BoundingBox {
   bool empty() const { return !(min.array() <= max.array()).all(); }
   Vec3 center() const { return 0.5 * (min + max); }
   double diagonal() const { return empty() ? 0.0 : (max - min).norm(); }
+  /// Squared distance from x to the box (0 inside): no larger than to anything in it.
+  double squared_distance(const Vec3& x) const {
+    return ((min - x).cwiseMax(0.0) + (x - max).cwiseMax(0.0)).squaredNorm();
+  }
 };
 
 }  // namespace voroseal

@@ -124,8 +124,7 @@ double distance_to_line(const Vec3& x, const std::vector<int>& line, const std::
 
 // Distance from x to a box (0 inside); no larger than the distance to anything in the box.
 double distance_to_box(const Vec3& x, const BoundingBox& box) {
-  const Vec3 below = (box.min - x).cwiseMax(0.0), above = (x - box.max).cwiseMax(0.0);
-  return (below + above).norm();
+  return std::sqrt(box.squared_distance(x));
 }
 
 // How close contact c runs along another contact: the smallest, over the other contacts, of the

@@ -30,11 +30,74 @@ Vec3 closest_on_segment(const Vec3& a, const Vec3& b, const Vec3& x) {
   return a + t * d;
 }
 
+// Segments per leaf of a contact's box tree: a few, so that a leaf's scan costs about a box test.
+constexpr int kSegmentsPerLeaf = 8;
+
+// Boxes over runs of a contact's segments: a complete binary tree in an array (node k has
+// children 2k and 2k + 1; leaf l is node leaves + l and holds segments from l·kSegmentsPerLeaf).
+// The closest point visits the runs in line order and skips a box no nearer than the best so far,
+// so it finds the very point a scan of the whole line finds (the first of equally near ones).
+class SegmentRuns {
+ public:
+  SegmentRuns(const std::vector<Vec3>& vertices, const std::vector<int>& line)
+      : vertices_(vertices), line_(line) {
+    const int segments = static_cast<int>(line.size()) - 1;
+    leaves_ = 1;
+    while (leaves_ * kSegmentsPerLeaf < segments) leaves_ *= 2;
+    box_.resize(2 * static_cast<size_t>(leaves_));
+    for (int i = 0; i < segments; ++i) {
+      BoundingBox& leaf = box_[leaves_ + i / kSegmentsPerLeaf];
+      leaf.extend(vertices[line[i]]);
+      leaf.extend(vertices[line[i + 1]]);
+    }
+    for (int k = leaves_ - 1; k >= 1; --k) {
+      box_[k] = box_[2 * k];
+      if (!box_[2 * k + 1].empty()) {
+        box_[k].extend(box_[2 * k + 1].min);
+        box_[k].extend(box_[2 * k + 1].max);
+      }
+    }
+  }
+
+  Vec3 closest(const Vec3& x) const {
+    Vec3 best = vertices_[line_.front()];
+    double best_d2 = (best - x).squaredNorm();
+    visit(1, x, best, best_d2);
+    return best;
+  }
+
+ private:
+  void visit(int node, const Vec3& x, Vec3& best, double& best_d2) const {
+    if (box_[node].empty() || box_[node].squared_distance(x) >= best_d2) return;
+    if (node < leaves_) {
+      visit(2 * node, x, best, best_d2);
+      visit(2 * node + 1, x, best, best_d2);
+      return;
+    }
+    const int first = (node - leaves_) * kSegmentsPerLeaf;
+    const int end = std::min<int>(first + kSegmentsPerLeaf, static_cast<int>(line_.size()) - 1);
+    for (int i = first; i < end; ++i) {
+      const Vec3 c = closest_on_segment(vertices_[line_[i]], vertices_[line_[i + 1]], x);
+      const double d2 = (c - x).squaredNorm();
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = c;
+      }
+    }
+  }
+
+  const std::vector<Vec3>& vertices_;
+  const std::vector<int>& line_;
+  int leaves_ = 1;
+  std::vector<BoundingBox> box_;
+};
+
 }  // namespace
 
 struct SurfaceProjector::Trees {
   std::vector<std::vector<Triangle3>> triangles;  // per part
   std::vector<std::unique_ptr<Tree>> part_tree;
+  std::vector<SegmentRuns> contact_runs;
 };
 
 SurfaceProjector::SurfaceProjector(const StructuralModel& model) : trees_(std::make_unique<Trees>()), model_(model) {
@@ -60,6 +123,9 @@ SurfaceProjector::SurfaceProjector(const StructuralModel& model) : trees_(std::m
     trees_->part_tree[p]->build();
     trees_->part_tree[p]->accelerate_distance_queries();
   }
+  trees_->contact_runs.reserve(model.contacts.size());
+  for (const Contact& c : model.contacts)
+    trees_->contact_runs.emplace_back(model.vertices, c.vertices);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
@@ -81,18 +147,7 @@ Vec3 SurfaceProjector::on_part(int part, const Vec3& x, const Vec3& near) const 
 }
 
 Vec3 SurfaceProjector::on_contact(int contact, const Vec3& x) const {
-  const std::vector<int>& line = model_.contacts[contact].vertices;
-  Vec3 best = model_.vertices[line.front()];
-  double best_d2 = (best - x).squaredNorm();
-  for (size_t i = 0; i + 1 < line.size(); ++i) {
-    const Vec3 c = closest_on_segment(model_.vertices[line[i]], model_.vertices[line[i + 1]], x);
-    const double d2 = (c - x).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best = c;
-    }
-  }
-  return best;
+  return trees_->contact_runs[contact].closest(x);
 }
 
 }  // namespace voroseal
