@@ -289,8 +289,10 @@ class Editor {
   // ---- validity ----
   void rebuild_grid() {
     grid_.reset(2.0 * mean_edge_);
+    grid_inserts_ = 0;
     for (size_t t = 0; t < s_.triangles.size(); ++t)
       if (!dead_[t]) grid_insert(static_cast<int>(t));
+    grid_inserts_ = 0;
   }
 
   // Violations on the edges of `triangles` and between `triangles` and any other triangle.
@@ -409,10 +411,14 @@ class Editor {
     lo = p(f[0]).cwiseMin(p(f[1])).cwiseMin(p(f[2]));
     hi = p(f[0]).cwiseMax(p(f[1])).cwiseMax(p(f[2]));
   }
+  // An edit adds a triangle's new cells and leaves it in its old ones (queries test boxes):
+  // once such entries could outnumber the triangles, the grid is built again, so that no
+  // query scans lists grown long with them.
   void grid_insert(int t) {
     Vec3 lo, hi;
     box(t, lo, hi);
     grid_.insert(t, lo, hi);
+    if (++grid_inserts_ > s_.triangles.size()) rebuild_grid();
   }
   // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
   // vertices on the same side). With opposite directions along the edge (consistent
@@ -461,6 +467,7 @@ class Editor {
   std::vector<Change> journal_;
   std::vector<size_t> marks_;  // the journal's length where each open transaction began
   TriangleGrid grid_;
+  size_t grid_inserts_ = 0;  // since the grid was last built
   std::vector<int> mark_, seen_;
   int epoch_ = 0, query_epoch_ = 0;
   std::vector<std::pair<int, int>> edges_;
