@@ -8,6 +8,9 @@
 // EvaluateRebuild: the same, but the neighbour lists are searched anew at every call.
 // Lbfgs100: 100 L-BFGS iterations from the random sampling (counters: evaluations, mean time
 // per evaluation, share of evaluations that rebuilt the neighbour lists).
+// Project: 100,000 closest points on sphere500k's surface, single-threaded, from points moved
+// off its vertices by up to 3 input edges, each searched from its vertex (SurfaceProjector's
+// hinted query, as the clean-up makes it after a move) and without a hint.
 // Threads: OpenMP's default (OMP_NUM_THREADS). Counter cpu_ms: CPU time of all threads per
 // iteration (on a loaded machine the wall time of a parallel run mostly measures the load).
 #include <benchmark/benchmark.h>
@@ -18,6 +21,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
 
 #include "framework/model/model_builder.h"
@@ -26,6 +30,7 @@
 #include "modules/remesh/optimizer.h"
 #include "modules/remesh/seed_energy.h"
 #include "modules/remesh/seed_sampling.h"
+#include "modules/remesh/surface_projection.h"
 #include "tests/modules/remesh/synthetic_surfaces.h"
 
 namespace {
@@ -131,9 +136,41 @@ void lbfgs100(benchmark::State& state, const Case& c) {
                                                                benchmark::Counter::kInvert);
 }
 
+void project(benchmark::State& state, bool hinted) {
+  const Loaded* m = load("sphere500k");
+  const SurfaceProjector projector(m->model);
+  const SurfacePart& part = m->model.parts.front();
+  double edge = 0.0;
+  for (const auto e : part.mesh.edges()) edge += part.mesh.calc_edge_length(e);
+  edge /= static_cast<double>(part.mesh.n_edges());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> offset(-3.0 * edge, 3.0 * edge);
+  std::uniform_int_distribution<int> vertex(0, static_cast<int>(part.model_vertex.size()) - 1);
+  std::vector<Vec3> from, query;
+  for (int i = 0; i < 100000; ++i) {
+    from.push_back(m->model.vertices[part.model_vertex[vertex(rng)]]);
+    query.push_back(from.back() + Vec3(offset(rng), offset(rng), offset(rng)));
+  }
+  const double cpu0 = process_cpu_ms();
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (size_t i = 0; i < query.size(); ++i)
+      sum += hinted ? projector.distance_to_part(0, query[i], from[i])
+                    : projector.distance_to_part(0, query[i]);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["cpu_ms"] = (process_cpu_ms() - cpu0) / static_cast<double>(state.iterations());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  benchmark::RegisterBenchmark("Project/hinted", [](benchmark::State& s) {
+    project(s, true);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("Project/unhinted", [](benchmark::State& s) {
+    project(s, false);
+  })->Unit(benchmark::kMillisecond);
   const Case cases[] = {{"sphere50k", 5000}, {"sphere50k", 30000}, {"sphere500k", 50000},
                         {"cloudspin", 5000}, {"cloudspin", 10000}};
   for (const Case& c : cases) {

@@ -5,7 +5,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <limits>
+#include <utility>
 
 namespace voroseal {
 
@@ -16,10 +18,55 @@ using Point3 = Kernel::Point_3;
 using Triangle3 = Kernel::Triangle_3;
 using TriangleIterator = std::vector<Triangle3>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using Traits = CGAL::AABB_traits<Kernel, Primitive>;
+using Tree = CGAL::AABB_tree<Traits>;
 
 Point3 to_cgal(const Vec3& v) { return Point3(v.x(), v.y(), v.z()); }
 Vec3 from_cgal(const Point3& p) { return Vec3(p.x(), p.y(), p.z()); }
+
+// CGAL's closest-point search with the nearer child box opened first, so that the sphere around
+// the query shrinks sooner than in AABB_tree::closest_point's left-first order. A box is opened
+// when it is nearer than the closest point so far; each triangle's point comes from CGAL.
+class NearestFirstProjection {
+ public:
+  using Priority = double;  // minus the squared distance to the box: nearer boxes first
+  NearestFirstProjection(const Point3& query, const Point3& hint, const Traits& traits)
+      : closest_(hint), d2_(CGAL::squared_distance(query, hint)), traits_(traits) {}
+  bool go_further() const { return true; }
+  void intersection(const Point3& query, const Primitive& primitive) {
+    closest_ = traits_.closest_point_object()(query, primitive, closest_);
+    d2_ = CGAL::squared_distance(query, closest_);
+  }
+  bool do_intersect(const Point3& query, const CGAL::AABB_node<Traits>& node) const {
+    return to_box(query, node.bbox()) < d2_;
+  }
+  std::pair<bool, Priority> do_intersect_with_priority(const Point3& query,
+                                                       const CGAL::AABB_node<Traits>& node) const {
+    const double d2 = to_box(query, node.bbox());
+    return {d2 < d2_, -d2};
+  }
+  const Point3& closest() const { return closest_; }
+
+ private:
+  static double to_box(const Point3& x, const CGAL::Bbox_3& b) {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double out = std::max({b.min(k) - x[k], x[k] - b.max(k), 0.0});
+      d2 += out * out;
+    }
+    return d2;
+  }
+  Point3 closest_;
+  double d2_;  // squared distance from the query to closest_
+  const Traits& traits_;
+};
+
+// The closest point of the tree's triangles to `query`, starting from `hint`, a point on them.
+Point3 closest_from(const Tree& tree, const Point3& query, const Point3& hint) {
+  NearestFirstProjection projection(query, hint, tree.traits());
+  tree.traversal_with_priority(query, projection);
+  return projection.closest();
+}
 
 // Closest point of segment [a, b] to x.
 Vec3 closest_on_segment(const Vec3& a, const Vec3& b, const Vec3& x) {
@@ -133,14 +180,15 @@ SurfaceProjector::~SurfaceProjector() = default;
 Vec3 SurfaceProjector::on_part(int part, const Vec3& x) const {
   const auto& tree = trees_->part_tree[part];
   if (!tree) return x;
-  return from_cgal(tree->closest_point(to_cgal(x)));
+  const Point3 query = to_cgal(x);
+  return from_cgal(closest_from(*tree, query, tree->best_hint(query).first));
 }
 
 Vec3 SurfaceProjector::on_part(int part, const Vec3& x, const Vec3& near) const {
   const auto& tree = trees_->part_tree[part];
   if (!tree) return x;
   const Point3 hint = to_cgal(near);
-  const Point3 closest = tree->closest_point(to_cgal(x), hint);
+  const Point3 closest = closest_from(*tree, to_cgal(x), hint);
   // Nothing closer than `near`: it may not lie on the part, so ask again without it.
   if (closest == hint) return on_part(part, x);
   return from_cgal(closest);

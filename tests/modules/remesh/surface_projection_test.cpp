@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+
+#include "framework/geometry/closest_point.h"
+#include "framework/model/model_builder.h"
+#include "tests/modules/remesh/synthetic_surfaces.h"
 
 namespace voroseal {
 namespace {
@@ -49,6 +54,33 @@ TEST(SurfaceProjector, ContactClosestPointIsTheScansOnLongWindingLines) {
       const Vec3 expected = scan(model.vertices, model.contacts[c].vertices, x);
       ASSERT_EQ(projector.on_contact(c, x), expected) << "contact " << c << ", query " << q;
     }
+  }
+}
+
+// Closest points on a bumpy sphere, searched from no hint, from a hint next to the answer and
+// from a hint across the sphere: every one as near as the nearest of all triangles.
+TEST(SurfaceProjector, PartClosestPointIsTheNearestOfAllTrianglesFromAnyHint) {
+  const StructuralModel model = build_model(test::bumpy_sphere(12, 0.2));
+  ASSERT_EQ(model.parts.size(), 1u);
+  const SurfaceProjector projector(model);
+  std::vector<Triangle> triangles;
+  append_part_triangles(model.parts[0], triangles);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  std::uniform_int_distribution<int> any(0, static_cast<int>(model.vertices.size()) - 1);
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 x(u(rng), u(rng), u(rng));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Triangle& f : triangles)
+      nearest = std::min(nearest,
+                         squared_distance_to_triangle(x, model.vertices[f[0]], model.vertices[f[1]],
+                                                      model.vertices[f[2]]));
+    nearest = std::sqrt(nearest);
+    const Vec3 far_hint = model.vertices[any(rng)];
+    const Vec3 near_hint = projector.on_part(0, x);
+    EXPECT_NEAR(projector.distance_to_part(0, x), nearest, 1e-12) << "query " << q;
+    EXPECT_NEAR(projector.distance_to_part(0, x, far_hint), nearest, 1e-12) << "query " << q;
+    EXPECT_NEAR(projector.distance_to_part(0, x, near_hint), nearest, 1e-12) << "query " << q;
   }
 }
 
