@@ -289,9 +289,8 @@ class Editor {
   // ---- validity ----
   void rebuild_grid() {
     grid_.reset(2.0 * mean_edge_);
-    grid_inserts_ = 0;
     for (size_t t = 0; t < s_.triangles.size(); ++t)
-      if (!dead_[t]) grid_insert(static_cast<int>(t));
+      if (!dead_[t]) add_to_grid(static_cast<int>(t));
     grid_inserts_ = 0;
   }
 
@@ -415,10 +414,13 @@ class Editor {
   // once such entries could outnumber the triangles, the grid is built again, so that no
   // query scans lists grown long with them.
   void grid_insert(int t) {
+    add_to_grid(t);
+    if (++grid_inserts_ > s_.triangles.size()) rebuild_grid();
+  }
+  void add_to_grid(int t) {
     Vec3 lo, hi;
     box(t, lo, hi);
     grid_.insert(t, lo, hi);
-    if (++grid_inserts_ > s_.triangles.size()) rebuild_grid();
   }
   // Two triangles sharing an edge can only intersect by folding onto each other (coplanar, third
   // vertices on the same side). With opposite directions along the edge (consistent
